@@ -1,0 +1,15 @@
+#pragma once
+// The `rigidfold` subcommands. Each add_*_command registers one subcommand on the app;
+// its callback does the work and throws rigidfold::InputError on bad input (main turns
+// that into one line on stderr and exit status 2).
+#include <CLI/CLI.hpp>
+
+namespace rigidfold::cli {
+
+void add_info_command(CLI::App& app);      // rigidfold info PATTERN.fold [--json]
+void add_fold_command(CLI::App& app);      // rigidfold fold PATTERN.fold --angles A.json --out F.fold [--obj F.obj]
+void add_vertex_command(CLI::App& app);    // rigidfold vertex s4r ...
+void add_generate_command(CLI::App& app);  // rigidfold generate KIND ... --out P.fold
+void add_report_command(CLI::App& app);    // rigidfold report DIR --out OUTDIR (main job)
+
+}  // namespace rigidfold::cli

@@ -1,0 +1,46 @@
+#pragma once
+// CreasePattern: the in-memory crease graph of one FOLD frame.
+//
+// Units: lengths in the file's units, fold angles in RADIANS (FOLD stores degrees;
+// the FOLD reader/writer converts). Sign convention (FOLD edges_foldAngle):
+//   rho = 0 flat, rho > 0 valley, rho < 0 mountain, rho in [-pi, pi].
+// Faces are vertex cycles ordered counter-clockwise seen from the side the face
+// normal points to (+z for a 2D pattern).
+#include <Eigen/Core>
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rigidfold {
+
+// FOLD edges_assignment letters.
+enum class Assignment { Boundary, Mountain, Valley, Flat, Unassigned, Cut, Join };
+
+char assignment_letter(Assignment a);
+// Returns nullopt for a letter FOLD does not define.
+std::optional<Assignment> assignment_from_letter(char c);
+// A crease that may fold (M, V, U). F and J are rigid joins, B and C are not joins.
+bool is_foldable_crease(Assignment a);
+
+struct CreasePattern {
+  std::vector<Eigen::Vector3d> vertices;      // reference coordinates (z = 0 for 2D input)
+  bool coords_2d = true;                      // true when the file gave 2D coordinates
+  std::vector<std::array<int, 2>> edges;      // vertex index pairs
+  std::vector<Assignment> assignments;        // one per edge
+  std::vector<std::optional<double>> fold_angles;  // radians; nullopt where the file gave null or nothing
+  std::vector<std::vector<int>> faces;        // CCW vertex cycles
+  bool faces_derived = false;                 // true when faces came from the planar embedding
+  // Every key of the frame that rigidfold does not model (file_*, frame_*, faceOrders,
+  // vendor keys like "cpedit:page", file_frames ...), kept verbatim for the round trip.
+  nlohmann::ordered_json extra = nlohmann::ordered_json::object();
+  bool fold_angles_in_file = false;           // the file had edges_foldAngle (written back even if all null)
+  std::vector<std::string> warnings;          // non-fatal remarks from reading/validation, with their place
+
+  int num_vertices() const { return static_cast<int>(vertices.size()); }
+  int num_edges() const { return static_cast<int>(edges.size()); }
+  int num_faces() const { return static_cast<int>(faces.size()); }
+};
+
+}  // namespace rigidfold
