@@ -214,6 +214,8 @@ CreasePattern parse_fold(const std::string& text, const std::string& source) {
     doc = Json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(source, std::string("not valid JSON (byte ") + std::to_string(e.byte) + "): " + e.what());
+  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large for a double
+    throw InputError(source, std::string("not valid JSON: ") + e.what());
   }
   if (!doc.is_object()) throw InputError(source, "top level must be a JSON object, found " + std::string(doc.type_name()));
 

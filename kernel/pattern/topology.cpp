@@ -86,8 +86,21 @@ Topology build_topology(const CreasePattern& p, const std::string& source) {
     return it == edge_of.end() ? -1 : it->second;
   };
 
-  // Faces on each side of every edge; orientation and manifoldness checks.
+  // Faces on each side of every edge; manifoldness first, then orientation.
   std::vector<int> edge_face_count(ne, 0);
+  {
+    std::vector<int> uses(ne, 0);
+    for (int f = 0; f < nf; ++f) {
+      const auto& face = p.faces[f];
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const int e = find_edge(face[k], face[(k + 1) % face.size()]);
+        if (e >= 0 && ++uses[e] > 2)
+          throw InputError(source + ": faces_vertices[" + std::to_string(f) + "]",
+                           "edge " + std::to_string(e) + " (vertices " + std::to_string(p.edges[e][0]) + "-" +
+                               std::to_string(p.edges[e][1]) + ") is shared by more than two faces (non-manifold)");
+      }
+    }
+  }
   std::vector<Corner> corners;
   for (int f = 0; f < nf; ++f) {
     const auto& face = p.faces[f];
@@ -105,7 +118,7 @@ Topology build_topology(const CreasePattern& p, const std::string& source) {
       if (t.edge_faces[e][side] >= 0)
         throw InputError(source + ": faces_vertices[" + std::to_string(f) + "]",
                          "faces " + std::to_string(t.edge_faces[e][side]) + " and " + std::to_string(f) +
-                             " traverse edge " + std::to_string(e) + " in the same direction (faces not consistently oriented, or more than two faces on one edge)");
+                             " traverse edge " + std::to_string(e) + " in the same direction (faces not consistently oriented)");
       t.edge_faces[e][side] = f;
       ++edge_face_count[e];
       corners.push_back({f, face[k], face[(k + m - 1) % m], face[(k + 1) % m]});

@@ -275,6 +275,9 @@ void complete_and_validate(CreasePattern& p, const std::string& source) {
       throw InputError(at(source, "edges_foldAngle[" + std::to_string(e) + "]"), "fold angle is not finite or outside [-180, 180] deg");
 
   check_edges(p, source);
+  const bool folded = is_folded_form(p);
+  // Crossings first: face derivation and orientation assume a proper plane embedding.
+  if (p.coords_2d && !folded) check_planar_embedding(p, planar_coordinates(p, source), source);
   if (p.faces.empty()) {
     p.faces = derive_planar_faces(p, source);
     p.faces_derived = true;
@@ -284,7 +287,6 @@ void complete_and_validate(CreasePattern& p, const std::string& source) {
       if (p.faces[f][k] < 0 || p.faces[f][k] >= p.num_vertices())
         throw InputError(at(source, face_path(f) + "[" + std::to_string(k) + "]"), "vertex index out of range");
   check_face_cycles(p, source);
-  const bool folded = is_folded_form(p);
   if (p.coords_2d && !folded) orient_planar_faces(p, source);
 
   // Assignments: fill from the face count when missing; a temporary U lets the topology
@@ -304,8 +306,6 @@ void complete_and_validate(CreasePattern& p, const std::string& source) {
   }
 
   if (p.coords_2d && !folded) {
-    const auto xy = planar_coordinates(p, source);
-    check_planar_embedding(p, xy, source);
     // In a flat sheet the corners around a vertex tile the plane once; more means overlap.
     for (int v = 0; v < p.num_vertices(); ++v) {
       const auto& star = topo.stars[v];
