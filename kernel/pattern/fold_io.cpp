@@ -243,13 +243,11 @@ CreasePattern read_fold(const std::string& path) { return parse_fold(read_text_f
 
 nlohmann::ordered_json fold_to_json(const CreasePattern& p) {
   Json doc = Json::object();
-  // Spec keys first in the conventional order, then everything we kept verbatim.
-  for (const char* key : {"file_spec", "file_creator", "file_author", "file_title", "file_description", "file_classes"})
-    if (p.extra.contains(key)) doc[key] = p.extra[key];
-  if (!doc.contains("file_spec")) doc["file_spec"] = 1.1;
-  if (!doc.contains("file_creator")) doc["file_creator"] = "rigidfold";
+  // Kept keys in their original order (file_frames last), then the modelled arrays.
+  if (!p.extra.contains("file_spec")) doc["file_spec"] = 1.1;
+  if (!p.extra.contains("file_creator")) doc["file_creator"] = "rigidfold";
   for (auto it = p.extra.begin(); it != p.extra.end(); ++it)
-    if (!doc.contains(it.key()) && it.key() != "file_frames") doc[it.key()] = it.value();
+    if (it.key() != "file_frames") doc[it.key()] = it.value();
 
   Json coords = Json::array();
   for (const auto& v : p.vertices) {
