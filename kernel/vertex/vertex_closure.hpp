@@ -1,0 +1,73 @@
+#pragma once
+// Loop closure of one vertex (spherical linkage): product, residual, exact Jacobian.
+//
+// Convention (the kernel's, see DESIGN.md):
+//   A vertex of degree n has creases 0..n-1 ordered counter-clockwise seen from +z
+//   (the papers' creases 1..n), sector i lies between crease i and crease i+1 (mod n).
+//   The loop closes when
+//       R(rho) = Rx(rho_0) Rz(alpha_0) Rx(rho_1) Rz(alpha_1) ... Rx(rho_{n-1}) Rz(alpha_{n-1}) = I
+//   (x along the current crease, z the face normal). rho_i > 0 lifts the sector after
+//   crease i toward +z: valley; rho_i < 0 mountain; rho = 0 flat.
+//   Sectors need not sum to 2*pi (non-developable cones, spherical linkages given by
+//   their twists); any real value is accepted.
+//
+// All angles are in radians. Inputs are spans so that a caller can pass a std::vector,
+// a std::array or an Eigen vector: std::span<const double>(v.data(), v.size()).
+#include <Eigen/Core>
+#include <span>
+
+namespace rigidfold {
+
+// Elementary rotations about the x and z axes.
+Eigen::Matrix3d rot_x(double angle);
+Eigen::Matrix3d rot_z(double angle);
+
+// Loop product of a vertex.
+// Inputs:
+//   sectors      n sector angles alpha_i (radians), alpha_i between crease i and i+1
+//   fold_angles  n fold angles rho_i (radians)
+// Returns R = prod_i Rx(rho_i) Rz(alpha_i) (3x3, orthogonal).
+// Throws std::invalid_argument if the sizes differ or n == 0.
+Eigen::Matrix3d vertex_loop_product(std::span<const double> sectors,
+                                    std::span<const double> fold_angles);
+
+// Rotation vector (angle * unit axis) of a rotation matrix: the principal SO(3) log.
+// Inputs:
+//   R  3x3 rotation matrix (assumed orthogonal with det +1)
+// Returns phi with |phi| in [0, pi] (radians) and exp([phi]x) = R.
+// Accurate to machine precision near angle 0 (no 0/0) and near pi (the axis is taken
+// from the symmetric part of R there, where the skew part vanishes). At exactly pi the
+// sign of the axis is arbitrary, as it must be.
+Eigen::Vector3d so3_log(const Eigen::Matrix3d& R);
+
+// Inverse of the left Jacobian of SO(3) at the rotation vector phi.
+// If R = exp([phi]x) and R is perturbed on the left, exp([d]x) R = exp([phi + dphi]x),
+// then dphi = so3_left_jacobian_inverse(phi) * d to first order.
+// Closed form I - [phi]x/2 + (1/t^2 - cot(t/2)/(2t)) [phi]x^2 with t = |phi|; a series is
+// used for small t. Finite for t in [0, pi] (valid for t < 2*pi).
+Eigen::Matrix3d so3_left_jacobian_inverse(const Eigen::Vector3d& phi);
+
+// Closure residual r = log(R(rho)) (rotation vector, radians). |r| is the closure error
+// of the vertex in radians: the rotation left over after going once around the vertex.
+// Inputs/throws as vertex_loop_product.
+Eigen::Vector3d vertex_closure_residual(std::span<const double> sectors,
+                                        std::span<const double> fold_angles);
+
+// Residual and its exact Jacobian with respect to the fold angles.
+// Inputs:
+//   sectors, fold_angles  as vertex_loop_product (n each)
+// Outputs:
+//   residual   r = log(R(rho)), 3-vector (radians)
+//   jacobian   3 x n (resized; reuse it across calls to avoid allocation),
+//              column i = d r / d rho_i = Jl^{-1}(r) u_i, where u_i is the axis
+//              of crease i expressed in the frame of crease 0 (the vertex frame):
+//              with R = P_i Rx(rho_i) S_i, dR/drho_i = [P_i e_x]x R.
+//   axes       optional (nullptr to skip): 3 x n, column i = u_i (unit vectors)
+// The Jacobian is smooth wherever |r| < pi (the log has its branch cut at pi).
+void vertex_closure_jacobian(std::span<const double> sectors,
+                             std::span<const double> fold_angles,
+                             Eigen::Vector3d& residual,
+                             Eigen::Matrix3Xd& jacobian,
+                             Eigen::Matrix3Xd* axes = nullptr);
+
+}  // namespace rigidfold
