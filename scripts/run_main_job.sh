@@ -7,5 +7,5 @@ bash scripts/bootstrap.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target rigidfold
 ./build/app/rigidfold report data/bundled --out out/report
-python3 python/plot_report.py out/report
+/usr/bin/python3 python/plot_report.py out/report
 echo "report: out/report/REPORT.md"

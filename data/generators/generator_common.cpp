@@ -1,0 +1,55 @@
+#include "data/generators/generator_common.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <numbers>
+
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/validate_pattern.hpp"
+
+namespace rigidfold::generators {
+
+void require(bool ok, const std::string& param, const std::string& what) {
+  if (!ok) throw InputError(param, what);
+}
+
+std::vector<Assignment> parse_assignment_letters(const std::string& letters, const std::string& param) {
+  std::vector<Assignment> out;
+  for (std::size_t i = 0; i < letters.size(); ++i) {
+    const char c = letters[i];
+    if (c == ' ' || c == ',' || c == '_') continue;
+    const auto a = assignment_from_letter(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+    if (!a)
+      throw InputError(param, std::string("'") + c + "' at position " + std::to_string(i) +
+                                  " is not a FOLD assignment letter (M, V, F, U, B, C, J)");
+    out.push_back(*a);
+  }
+  return out;
+}
+
+std::string assignment_letters(const std::vector<Assignment>& assignment) {
+  std::string s;
+  for (auto a : assignment) s.push_back(assignment_letter(a));
+  return s;
+}
+
+CreasePattern finish_pattern(CreasePattern p, const std::string& title, const std::string& frame_title,
+                             const nlohmann::ordered_json& generator_parameters) {
+  p.coords_2d = true;
+  p.extra["file_spec"] = 1.1;
+  p.extra["file_creator"] = "rigidfold generate";
+  p.extra["file_title"] = title;
+  p.extra["file_classes"] = nlohmann::ordered_json::array({"singleModel"});
+  p.extra["frame_title"] = frame_title;
+  p.extra["frame_classes"] = nlohmann::ordered_json::array({"creasePattern"});
+  p.extra["frame_attributes"] = nlohmann::ordered_json::array({"2D"});
+  p.extra["rigidfold:generator"] = generator_parameters;
+  complete_and_validate(p, title);
+  return p;
+}
+
+double deg(double radians) { return radians * 180.0 / std::numbers::pi; }
+double deg_rounded(double radians) { return std::round(deg(radians) * 1e9) / 1e9; }
+double rad(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+}  // namespace rigidfold::generators
