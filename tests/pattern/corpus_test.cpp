@@ -115,8 +115,12 @@ TEST(CorpusSquareTwist, FoldedReferenceGivesTheDesignSectorAngles) {
     std::vector<double> angles;
     for (int e : fan.edges) {
       angles.push_back(rho[e]);
-      if (p.assignments[e] == Assignment::Mountain) EXPECT_LT(rho[e], 0);
-      if (p.assignments[e] == Assignment::Valley) EXPECT_GT(rho[e], 0);
+      if (p.assignments[e] == Assignment::Mountain) {
+        EXPECT_LT(rho[e], 0);
+      }
+      if (p.assignments[e] == Assignment::Valley) {
+        EXPECT_GT(rho[e], 0);
+      }
     }
     EXPECT_LT(vertex_closure_residual(fan.sectors, angles).norm(), 2e-5) << "vertex " << v;
     EXPECT_GT(std::fabs(angles[0]), 0.1);  // genuinely folded, not a flat reference
