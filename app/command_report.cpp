@@ -6,7 +6,7 @@
 //   - where the file carries fold angles, the folded state (faces placed by spanning tree)
 //     and its closure mismatch; the folded state is written to OUTDIR for the figures.
 // Writes OUTDIR/report.json and OUTDIR/REPORT.md; python/plot_report.py draws the figures.
-// The global verdict (loop closure across vertices, branches) is the solver's job.
+//   - the rigid-foldability verdict (rigidfold check) with and without the assignment.
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/foldability_json.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
@@ -94,10 +95,12 @@ Json analyse(const fs::path& file, const fs::path& out_dir) {
   j["flat_foldable_degree4_vertices"] = degree4;
   j["locally_obstructed_vertices"] = obstructed;
   std::string local;
-  if (obstructed > 0) local = "not rigidly foldable with this assignment: " + std::to_string(obstructed) + " vertex/vertices admit no mode matching it";
-  else if (kawasaki == static_cast<int>(ff.size()) && maekawa == static_cast<int>(ff.size())) local = "every vertex locally flat-foldable; global closure pending (solver)";
-  else local = "some vertices not flat-foldable (rigid folding still possible); global closure pending (solver)";
+  if (obstructed > 0) local = std::to_string(obstructed) + " vertex/vertices admit no mode matching the assignment";
+  else if (kawasaki == static_cast<int>(ff.size()) && maekawa == static_cast<int>(ff.size())) local = "every vertex locally flat-foldable";
+  else local = "some vertices not flat-foldable";
   j["local_verdict"] = local;
+  j["check"] = foldability_json(p, t, false);
+  j["check_ignoring_assignment"] = foldability_json(p, t, true);
   j["vertex_details"] = vertices;
 
   bool has_angles = false;
@@ -118,16 +121,20 @@ Json analyse(const fs::path& file, const fs::path& out_dir) {
 std::string markdown(const Json& report) {
   std::ostringstream md;
   md << "# rigidfold report\n\n";
-  md << "Patterns from `" << report["input"].get<std::string>() << "`. Local checks are exact per vertex; a vertex whose "
-        "M/V assignment matches neither rigid mode of a flat-foldable degree-4 vertex proves the pattern cannot fold "
-        "rigidly with that assignment. Where a file carries fold angles, faces are placed by a spanning tree and the "
-        "closure mismatch (length units, relative to the pattern size) is the error of those angles.\n\n";
-  md << "| pattern | V | E | F | interior | Kawasaki | Maekawa | worst Kawasaki residual (deg) | local verdict | relative closure mismatch | time (s) |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "Patterns from `" << report["input"].get<std::string>() << "`. The verdict comes from the cheapest exact model that "
+        "applies: multiplier propagation where every interior vertex is a flat-foldable degree-4 vertex (a fold family "
+        "with its closure residual, or a loop of vertices whose loop gain is not 1). Patterns outside that model wait for "
+        "the general loop-closure solver and are reported as not-applicable. Where a file carries fold angles, faces are "
+        "placed by a spanning tree and the closure mismatch (relative to the pattern size) is the error of those angles.\n\n";
+  md << "| pattern | V | E | F | interior | Kawasaki | Maekawa | verdict (M-V as given) | model | DOF | max residual (rad) | obstruction | verdict (M-V ignored) | local checks | closure mismatch of stored angles | time (s) |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& j : report["patterns"]) {
     md << "| " << j["name"].get<std::string>() << " | " << j["vertices"] << " | " << j["edges"] << " | " << j["faces"] << " | "
        << j["interior_vertices"] << " | " << j["kawasaki_ok"] << " | " << j["maekawa_ok"] << " | "
-       << j["worst_kawasaki_residual_deg"].get<double>() << " | " << j["local_verdict"].get<std::string>() << " | "
+       << j["check"]["verdict"].get<std::string>() << " | " << j["check"]["model"].get<std::string>() << " | " << j["check"]["dof"]
+       << " | " << j["check"]["max_residual"].get<double>() << " | "
+       << (j["check"]["obstruction"].is_null() ? std::string("-") : j["check"]["obstruction"]["message"].get<std::string>()) << " | "
+       << j["check_ignoring_assignment"]["verdict"].get<std::string>() << " | " << j["local_verdict"].get<std::string>() << " | "
        << (j.contains("relative_closure_mismatch") ? std::to_string(j["relative_closure_mismatch"].get<double>()) : "-") << " | "
        << j["seconds"].get<double>() << " |\n";
   }
@@ -159,7 +166,8 @@ void add_report_command(CLI::App& app) {
     for (const auto& f : files) {
       report["patterns"].push_back(analyse(f, *out));
       const auto& j = report["patterns"].back();
-      std::cout << j["name"].get<std::string>() << ": " << j["local_verdict"].get<std::string>();
+      std::cout << j["name"].get<std::string>() << ": " << j["check"]["verdict"].get<std::string>() << " (" << j["check"]["model"].get<std::string>()
+                << "); " << j["local_verdict"].get<std::string>();
       if (j.contains("relative_closure_mismatch")) std::cout << "; folded state closure mismatch " << j["relative_closure_mismatch"].get<double>();
       std::cout << "\n";
     }

@@ -8,6 +8,7 @@ namespace rigidfold::cli {
 
 void add_info_command(CLI::App& app);      // rigidfold info PATTERN.fold [--json]
 void add_fold_command(CLI::App& app);      // rigidfold fold PATTERN.fold --angles A.json --out F.fold [--obj F.obj]
+void add_check_command(CLI::App& app);     // rigidfold check PATTERN.fold [--ignore-assignment] [--json]
 void add_vertex_command(CLI::App& app);    // rigidfold vertex s4r ...
 void add_generate_command(CLI::App& app);  // rigidfold generate KIND ... --out P.fold
 void add_report_command(CLI::App& app);    // rigidfold report DIR --out OUTDIR (main job)

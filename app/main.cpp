@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "rigidfold 0.1.0");
   rigidfold::cli::add_info_command(app);
   rigidfold::cli::add_fold_command(app);
+  rigidfold::cli::add_check_command(app);
   rigidfold::cli::add_vertex_command(app);
   rigidfold::cli::add_generate_command(app);
   rigidfold::cli::add_report_command(app);

@@ -1,0 +1,39 @@
+// rigidfold check PATTERN.fold [--ignore-assignment] [--json]
+// Rigid-foldability verdict. Exit 0 whether or not it folds; 2 on bad input.
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "app/foldability_json.hpp"
+#include "kernel/pattern/fold_io.hpp"
+
+namespace rigidfold::cli {
+
+void add_check_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("check", "Rigid-foldability verdict with certificate or obstruction");
+  struct Args {
+    std::string pattern;
+    bool ignore = false, json = false;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("pattern", a->pattern, "crease pattern (.fold)")->required();
+  cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
+  cmd->add_flag("--json", a->json, "print one JSON object");
+  cmd->callback([a] {
+    const CreasePattern p = read_fold(a->pattern);
+    const Topology t = build_topology(p, a->pattern);
+    nlohmann::ordered_json j = {{"file", a->pattern}};
+    j.update(foldability_json(p, t, a->ignore));
+    if (a->json) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    std::cout << a->pattern << ": " << j["verdict"].get<std::string>() << " (model: " << j["model"].get<std::string>() << ")\n";
+    std::cout << "  " << j["reason"].get<std::string>() << "\n";
+    if (j["rigidly_foldable"] == true)
+      std::cout << "  DOF " << j["dof"] << ", max closure residual along the branch " << j["max_residual"].get<double>()
+                << " rad, certificate mismatch " << j["certificate_mismatch"].get<double>() << "\n";
+    if (!j["obstruction"].is_null()) std::cout << "  obstruction: " << j["obstruction"]["message"].get<std::string>() << "\n";
+  });
+}
+
+}  // namespace rigidfold::cli

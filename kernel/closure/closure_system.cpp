@@ -1,0 +1,154 @@
+#include "kernel/closure/closure_system.hpp"
+
+#include <cmath>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include "kernel/vertex/vertex_closure.hpp"
+
+namespace rigidfold {
+
+namespace {
+
+void check_edge(int e, int num_edges, const char* what) {
+  if (e < 0 || e >= num_edges)
+    throw std::invalid_argument(std::string("closure system: ") + what + " edge " + std::to_string(e) +
+                                " out of range [0, " + std::to_string(num_edges) + ")");
+}
+
+}  // namespace
+
+ClosureSystem::ClosureSystem(const CreasePattern& pattern, const Topology& topology, const ClosureOptions& options)
+    : num_edges_(pattern.num_edges()),
+      unknown_of_edge_(pattern.num_edges(), -1),
+      constant_angle_(pattern.num_edges(), 0.0),
+      is_fixed_(pattern.num_edges(), false) {
+  for (std::size_t c = 0; c < topology.components.size(); ++c) {
+    const Component& comp = topology.components[c];
+    if (comp.holes > 0 || comp.genus > 0)
+      throw std::runtime_error("closure system: component " + std::to_string(c) + " has " +
+                               std::to_string(comp.holes) + " hole(s) and genus " + std::to_string(comp.genus) +
+                               "; SE(3) loop closure around holes not supported yet");
+  }
+  auto foldable_hinge = [&](int e) {
+    return topology.edge_is_hinge[e] && is_foldable_crease(pattern.assignments[e]);
+  };
+  for (const auto& [e, value] : options.fixed) {
+    check_edge(e, num_edges_, "fixed");
+    if (!foldable_hinge(e))
+      throw std::invalid_argument("closure system: fixed edge " + std::to_string(e) +
+                                  " is not a foldable hinge (M, V or U between two faces)");
+    if (is_fixed_[e]) throw std::invalid_argument("closure system: edge " + std::to_string(e) + " fixed twice");
+    is_fixed_[e] = true;
+    constant_angle_[e] = value;
+  }
+  for (int e = 0; e < num_edges_; ++e) {
+    if (foldable_hinge(e) && !is_fixed_[e]) {
+      unknown_of_edge_[e] = static_cast<int>(free_edges_.size());
+      free_edges_.push_back(e);
+    }
+  }
+  for (const CreaseEquality& q : options.equalities) {
+    check_edge(q.edge_a, num_edges_, "equality");
+    check_edge(q.edge_b, num_edges_, "equality");
+    if (q.sign != 1.0 && q.sign != -1.0)
+      throw std::invalid_argument("closure system: equality sign must be +1 or -1");
+    equalities_.push_back(q);
+  }
+  for (int v : topology.interior_vertices) {
+    const Fan& fan = topology.stars[v].fans.at(0);
+    vertices_.push_back(VertexRow{v, fan.edges, fan.sectors});
+  }
+}
+
+void ClosureSystem::set_fixed_value(int edge, double value) {
+  check_edge(edge, num_edges_, "fixed");
+  if (!is_fixed_[edge]) throw std::invalid_argument("closure system: edge " + std::to_string(edge) + " is not fixed");
+  constant_angle_[edge] = value;
+}
+
+double ClosureSystem::fixed_value(int edge) const {
+  check_edge(edge, num_edges_, "queried");
+  return constant_angle_[edge];
+}
+
+Eigen::VectorXd ClosureSystem::unknowns_from_edges(const Eigen::VectorXd& edge_angles) const {
+  if (edge_angles.size() != num_edges_)
+    throw std::invalid_argument("closure system: expected " + std::to_string(num_edges_) + " edge angles");
+  Eigen::VectorXd x(num_unknowns());
+  for (int k = 0; k < num_unknowns(); ++k) x[k] = edge_angles[free_edges_[k]];
+  return x;
+}
+
+Eigen::VectorXd ClosureSystem::edges_from_unknowns(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd rho(num_edges_);
+  for (int e = 0; e < num_edges_; ++e) rho[e] = angle_of_edge(e, x);
+  return rho;
+}
+
+double ClosureSystem::angle_of_edge(int e, const Eigen::VectorXd& x) const {
+  const int k = unknown_of_edge_[e];
+  return k >= 0 ? x[k] : constant_angle_[e];
+}
+
+void ClosureSystem::gather(const VertexRow& row, const Eigen::VectorXd& x, std::vector<double>& angles) const {
+  angles.resize(row.edges.size());
+  for (std::size_t i = 0; i < row.edges.size(); ++i) angles[i] = angle_of_edge(row.edges[i], x);
+}
+
+Eigen::VectorXd ClosureSystem::residual(const Eigen::VectorXd& x) const {
+  if (x.size() != num_unknowns())
+    throw std::invalid_argument("closure system: expected " + std::to_string(num_unknowns()) + " unknowns");
+  Eigen::VectorXd r(num_rows());
+  std::vector<double> angles;
+  for (int k = 0; k < num_vertices(); ++k) {
+    const VertexRow& row = vertices_[k];
+    gather(row, x, angles);
+    r.segment<3>(3 * k) = vertex_closure_residual(std::span<const double>(row.sectors), std::span<const double>(angles));
+  }
+  for (std::size_t q = 0; q < equalities_.size(); ++q) {
+    const CreaseEquality& eq = equalities_[q];
+    r[3 * num_vertices() + static_cast<int>(q)] = angle_of_edge(eq.edge_a, x) - eq.sign * angle_of_edge(eq.edge_b, x);
+  }
+  return r;
+}
+
+void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual,
+                             Eigen::SparseMatrix<double>& jacobian) const {
+  if (x.size() != num_unknowns())
+    throw std::invalid_argument("closure system: expected " + std::to_string(num_unknowns()) + " unknowns");
+  residual.resize(num_rows());
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::size_t count = 2 * equalities_.size();
+  for (const VertexRow& row : vertices_) count += 3 * row.edges.size();
+  triplets.reserve(count);
+
+  std::vector<double> angles;
+  Eigen::Vector3d r;
+  Eigen::Matrix3Xd jv;
+  for (int k = 0; k < num_vertices(); ++k) {
+    const VertexRow& row = vertices_[k];
+    gather(row, x, angles);
+    vertex_closure_jacobian(std::span<const double>(row.sectors), std::span<const double>(angles), r, jv);
+    residual.segment<3>(3 * k) = r;
+    for (std::size_t i = 0; i < row.edges.size(); ++i) {
+      const int col = unknown_of_edge_[row.edges[i]];
+      if (col < 0) continue;
+      // A crease met twice in one fan (degenerate input) contributes twice: triplets add up.
+      for (int d = 0; d < 3; ++d) triplets.emplace_back(3 * k + d, col, jv(d, static_cast<int>(i)));
+    }
+  }
+  const int base = 3 * num_vertices();
+  for (std::size_t q = 0; q < equalities_.size(); ++q) {
+    const CreaseEquality& eq = equalities_[q];
+    const int rowi = base + static_cast<int>(q);
+    residual[rowi] = angle_of_edge(eq.edge_a, x) - eq.sign * angle_of_edge(eq.edge_b, x);
+    if (const int ca = unknown_of_edge_[eq.edge_a]; ca >= 0) triplets.emplace_back(rowi, ca, 1.0);
+    if (const int cb = unknown_of_edge_[eq.edge_b]; cb >= 0) triplets.emplace_back(rowi, cb, -eq.sign);
+  }
+  jacobian.resize(num_rows(), num_unknowns());
+  jacobian.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+}  // namespace rigidfold

@@ -1,0 +1,174 @@
+// Rank / DOF of the closure Jacobian: Miura 1 DOF at folded points (dense SVD and SPQR),
+// single generic vertices n - 3 DOF, a perturbed (non flat-foldable) 3x3 quad mesh rigid,
+// and the flat state of a Miura singular (first-order count > 1, inconclusive there).
+#include "kernel/solve/rank.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <iostream>
+#include <random>
+
+#include "data/generators/miura.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/solve/newton_projection.hpp"
+#include "tests/closure/closure_test_utils.hpp"
+
+namespace rigidfold {
+namespace {
+
+using testing::miura_edge_angles;
+using testing::random_vector;
+
+Eigen::SparseMatrix<double> jacobian_at(const ClosureSystem& sys, const Eigen::VectorXd& x) {
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  sys.evaluate(x, r, J);
+  return J;
+}
+
+void print_rank(const char* name, const RankResult& r) {
+  std::cout << "[ rank     ] " << name << ": " << r.method << " " << r.rows << "x" << r.cols << " rank " << r.rank
+            << " dof " << r.dof << "  sigma_max " << r.sigma_max << " kept " << r.sigma_kept << " dropped "
+            << r.sigma_dropped << "\n";
+}
+
+TEST(SolverRank, MiuraAtFoldedPointHasOneDof) {
+  for (auto [rows, cols] : {std::pair{2, 2}, {3, 3}, {4, 5}, {8, 8}}) {
+    generators::MiuraParams m;
+    m.rows = rows;
+    m.cols = cols;
+    m.alpha = 1.0;
+    const CreasePattern p = generators::miura_ori(m);
+    const ClosureSystem sys(p, build_topology(p));
+    for (double s : {0.2, 1.3, 2.8}) {
+      const Eigen::VectorXd x = sys.unknowns_from_edges(miura_edge_angles(p, m, s));
+      const Eigen::SparseMatrix<double> J = jacobian_at(sys, x);
+      const RankResult dense = jacobian_rank(J);
+      print_rank("miura folded", dense);
+      EXPECT_EQ(dense.dof, 1) << rows << "x" << cols << " s " << s;
+      EXPECT_GT(dense.sigma_kept, 1e-4);    // a clear gap on both sides of the 1e-9 cut
+      EXPECT_LT(dense.sigma_dropped, 1e-13);
+      ASSERT_EQ(dense.null_space.cols(), 1);
+      EXPECT_LE((J * dense.null_space).norm(), 1e-13);
+      // The tangent is the derivative of the closed form.
+      const double h = 1e-6;
+      Eigen::VectorXd t = (sys.unknowns_from_edges(miura_edge_angles(p, m, s + h)) -
+                           sys.unknowns_from_edges(miura_edge_angles(p, m, s - h))) / (2 * h);
+      t.normalize();
+      EXPECT_NEAR(std::fabs(t.dot(dense.null_space.col(0))), 1.0, 1e-8);
+
+      RankOptions sparse_opt;
+      sparse_opt.dense_limit = 0;  // force SPQR
+      const RankResult sparse = jacobian_rank(J, sparse_opt);
+      EXPECT_EQ(sparse.method, "spqr");
+      EXPECT_EQ(sparse.dof, 1) << rows << "x" << cols << " s " << s;
+      ASSERT_EQ(sparse.null_space.cols(), 1);
+      EXPECT_NEAR(std::fabs(sparse.null_space.col(0).dot(dense.null_space.col(0))), 1.0, 1e-10);
+    }
+  }
+}
+
+TEST(SolverRank, LargeMiuraUsesSpqr) {
+  generators::MiuraParams m;
+  m.rows = m.cols = 40;  // 3120 unknowns: above the dense limit
+  const CreasePattern p = generators::miura_ori(m);
+  const ClosureSystem sys(p, build_topology(p));
+  const Eigen::SparseMatrix<double> J = jacobian_at(sys, sys.unknowns_from_edges(miura_edge_angles(p, m, 1.0)));
+  const auto t0 = std::chrono::steady_clock::now();
+  const RankResult r = jacobian_rank(J);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  print_rank("miura 40x40", r);
+  std::cout << "[ rank     ] miura 40x40 spqr time " << ms << " ms\n";
+  EXPECT_EQ(r.method, "spqr");
+  EXPECT_EQ(r.dof, 1);
+  ASSERT_EQ(r.null_space.cols(), 1);
+  EXPECT_LE((J * r.null_space).norm(), 1e-12);
+}
+
+// A generic single vertex of degree n (random sectors, not flat-foldable), brought to a
+// closed, non-flat point by Newton projection from a random start: n - 3 DOF.
+TEST(SolverRank, GenericSingleVertexHasDegreeMinusThreeDof) {
+  std::mt19937_64 rng(2024);
+  for (int n : {5, 6, 7}) {
+    int tested = 0;
+    for (int trial = 0; trial < 20 && tested < 3; ++trial) {
+      const CreasePattern p = testing::single_vertex_pattern(testing::random_directions(n, rng));
+      const ClosureSystem sys(p, build_topology(p));
+      ASSERT_EQ(sys.num_unknowns(), n);
+      NewtonOptions opt;
+      opt.max_iterations = 60;
+      const NewtonResult res = newton_project(sys, random_vector(n, rng, 1.0), opt);
+      if (!res.converged || res.x.lpNorm<Eigen::Infinity>() < 0.2) continue;  // want a folded point
+      const RankResult r = jacobian_rank(jacobian_at(sys, res.x));
+      print_rank("single vertex", r);
+      EXPECT_EQ(r.dof, n - 3) << "degree " << n;
+      EXPECT_GT(r.sigma_kept, 1e-6);
+      ++tested;
+    }
+    EXPECT_GE(tested, 2) << "degree " << n;
+  }
+}
+
+// A 3x3 Miura with perturbed interior vertices: 4 generic (non flat-foldable) degree-4
+// vertices, 12 unknowns and 12 equations. What is asserted:
+//   (a) J has full rank 12 (DOF 0) at random nonzero fold angles, so a folded solution, if
+//       any, would be an isolated point, not a motion;
+//   (b) with one crease held at a fold of 0.1 rad and the others started near a small fold,
+//       Newton projection does not reach the manifold (its residual stays above 1e-6):
+//       the 11 remaining unknowns cannot satisfy 12 equations;
+//   (c) the same procedure on the unperturbed Miura converges (the control).
+TEST(SolverRank, PerturbedMiuraIsRigid) {
+  std::mt19937_64 rng(77);
+  generators::MiuraParams m;
+  m.rows = m.cols = 3;
+  m.perturbation = 0.15;
+  m.seed = 5;
+  const CreasePattern p = generators::miura_ori(m);
+  const ClosureSystem sys(p, build_topology(p));
+  ASSERT_EQ(sys.num_unknowns(), 12);
+  ASSERT_EQ(sys.num_rows(), 12);
+  for (int trial = 0; trial < 5; ++trial) {
+    const RankResult r = jacobian_rank(jacobian_at(sys, random_vector(12, rng, 1.0)));
+    EXPECT_EQ(r.dof, 0);
+    EXPECT_GT(r.sigma_kept, 1e-4);
+  }
+  m.perturbation = 0.0;
+  const CreasePattern q = generators::miura_ori(m);
+  const ClosureSystem control(q, build_topology(q));
+  const Eigen::VectorXd small = control.unknowns_from_edges(miura_edge_angles(q, m, 0.1));
+  for (int trial = 0; trial < 3; ++trial) {
+    NewtonOptions opt;
+    opt.max_iterations = 50;
+    opt.held_unknowns = {0};
+    Eigen::VectorXd x0 = small + random_vector(12, rng, 0.02);
+    x0[0] = small[0];
+    const NewtonResult bad = newton_project(sys, x0, opt);
+    std::cout << "[ rank     ] perturbed miura, crease held at " << x0[0] << ": residual after " << bad.iterations
+              << " steps " << bad.residual_history.back() << "\n";
+    EXPECT_FALSE(bad.converged);
+    EXPECT_GT(bad.residual_history.back(), 1e-6);
+    const NewtonResult good = newton_project(control, x0, opt);
+    EXPECT_TRUE(good.converged);
+  }
+}
+
+// At the flat state every crease axis lies in the sheet, so the z row of every vertex
+// vanishes: rank <= 2 * (interior vertices) and the first-order DOF count exceeds 1 although
+// the pattern has one folding mode. The flat state is a bifurcation point.
+TEST(SolverRank, FlatMiuraIsSingular) {
+  for (int size : {3, 5}) {
+    generators::MiuraParams m;
+    m.rows = m.cols = size;
+    const CreasePattern p = generators::miura_ori(m);
+    const ClosureSystem sys(p, build_topology(p));
+    const RankResult r = jacobian_rank(jacobian_at(sys, Eigen::VectorXd::Zero(sys.num_unknowns())));
+    print_rank("miura flat", r);
+    EXPECT_GT(r.dof, 1);
+    EXPECT_LE(r.rank, 2 * sys.num_vertices());
+    EXPECT_GE(r.dof, sys.num_unknowns() - 2 * sys.num_vertices());
+  }
+}
+
+}  // namespace
+}  // namespace rigidfold
