@@ -13,6 +13,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
+#include "tests/support/expect_same_pattern.hpp"
 
 namespace rigidfold {
 namespace {
@@ -72,17 +73,7 @@ TEST_P(Corpus, RoundTripPreservesEveryField) {
   const auto& c = GetParam();
   const CreasePattern a = read_fold(corpus(c.path));
   const CreasePattern b = parse_fold(write_fold_string(a), "roundtrip");
-  EXPECT_EQ(b.vertices, a.vertices);
-  EXPECT_EQ(b.coords_2d, a.coords_2d);
-  EXPECT_EQ(b.edges, a.edges);
-  EXPECT_EQ(b.assignments, a.assignments);
-  EXPECT_EQ(b.faces, a.faces);
-  EXPECT_EQ(b.extra, a.extra);
-  ASSERT_EQ(b.fold_angles.size(), a.fold_angles.size());
-  for (std::size_t e = 0; e < a.fold_angles.size(); ++e) {
-    ASSERT_EQ(b.fold_angles[e].has_value(), a.fold_angles[e].has_value());
-    if (a.fold_angles[e]) EXPECT_NEAR(*b.fold_angles[e], *a.fold_angles[e], 1e-15);
-  }
+  test::expect_same_pattern(a, b, 1e-15);
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, Corpus, ::testing::ValuesIn(kFiles), [](const auto& info) {

@@ -9,6 +9,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "tests/support/expect_same_pattern.hpp"
 
 namespace rigidfold {
 namespace {
@@ -35,16 +36,7 @@ TEST(FoldIo, RoundTripKeepsModelledAndUnknownKeys) {
 
   const std::string text = write_fold_string(a);
   const CreasePattern b = parse_fold(text, "roundtrip.fold");
-  EXPECT_EQ(b.vertices, a.vertices);
-  EXPECT_EQ(b.edges, a.edges);
-  EXPECT_EQ(b.assignments, a.assignments);
-  EXPECT_EQ(b.faces, a.faces);
-  ASSERT_EQ(b.fold_angles.size(), a.fold_angles.size());
-  for (std::size_t e = 0; e < a.fold_angles.size(); ++e) {
-    ASSERT_EQ(b.fold_angles[e].has_value(), a.fold_angles[e].has_value());
-    if (a.fold_angles[e]) { EXPECT_NEAR(*b.fold_angles[e], *a.fold_angles[e], 4e-16 * std::fabs(*a.fold_angles[e])); }
-  }
-  EXPECT_EQ(b.extra, a.extra);  // unknown and non-modelled spec keys, including file_frames
+  test::expect_same_pattern(a, b, 4e-16 * 37.5 * std::numbers::pi / 180);
   EXPECT_EQ(b.extra["vendor:custom"]["keep"][2], 3);
   EXPECT_EQ(b.extra["file_frames"][0]["frame_classes"][0], "foldedForm");
   // A second round trip is byte-identical: writing is a fixed point.
