@@ -12,17 +12,18 @@ void add_check_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("check", "Rigid-foldability verdict with certificate or obstruction");
   struct Args {
     std::string pattern;
-    bool ignore = false, json = false;
+    bool ignore = false, json = false, general = false;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold)")->required();
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--json", a->json, "print one JSON object");
+  cmd->add_flag("--general", a->general, "force the general loop-closure solver (skip multiplier propagation)");
   cmd->callback([a] {
     const CreasePattern p = read_fold(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     nlohmann::ordered_json j = {{"file", a->pattern}};
-    j.update(foldability_json(p, t, a->ignore));
+    j.update(foldability_json(p, t, a->ignore, a->general));
     if (a->json) {
       std::cout << j.dump(2) << "\n";
       return;
@@ -31,7 +32,7 @@ void add_check_command(CLI::App& app) {
     std::cout << "  " << j["reason"].get<std::string>() << "\n";
     if (j["rigidly_foldable"] == true)
       std::cout << "  DOF " << j["dof"] << ", max closure residual along the branch " << j["max_residual"].get<double>()
-                << " rad, certificate mismatch " << j["certificate_mismatch"].get<double>() << "\n";
+                << " rad, certificate mismatch " << j.value("certificate_mismatch", -1.0) << "\n";
     if (!j["obstruction"].is_null()) std::cout << "  obstruction: " << j["obstruction"]["message"].get<std::string>() << "\n";
   });
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
@@ -40,18 +41,102 @@ Json obstruction_json(const Obstruction& o) {
   return j;
 }
 
+// The general loop-closure solver's verdict: a traced branch from near flat (yes), or the
+// least residual reached at a small fold (no: numerical evidence, not a proof).
+Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, const std::string& why_general) {
+  GeneralVerdictOptions options;
+  options.use_assignment = !ignore_assignment;
+  const GeneralVerdict g = general_verdict(p, t, options);
+  Json j;
+  j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
+  j["verdict"] = to_string(g.verdict);
+  if (g.verdict == Verdict::kRigidlyFoldable) j["rigidly_foldable"] = true;
+  else if (g.verdict == Verdict::kNotRigidlyFoldable) j["rigidly_foldable"] = false;
+  else j["rigidly_foldable"] = nullptr;
+  j["model"] = g.model;
+  j["model_choice"] = why_general;
+  j["reason"] = g.reason;
+  j["is_proof"] = g.verdict == Verdict::kRigidlyFoldable || g.is_proof;
+  j["dof"] = g.verdict == Verdict::kRigidlyFoldable ? std::max(g.dof, 0) : 0;
+  j["dof_tolerance"] = "rank of the closure Jacobian at the traced point, singular values below 1e-9 x largest dropped";
+  Json branches = Json::array();
+  if (g.verdict == Verdict::kRigidlyFoldable) {
+    branches.push_back({{"id", 0},
+                        {"signs_match_assignment", ignore_assignment ? Json(nullptr) : Json(g.sign_switches.empty())},
+                        {"range_deg", {0.0, g.max_fold * kDeg}},
+                        {"stopped_by", g.stopped_by},
+                        {"max_residual", g.max_residual},
+                        {"driving_crease", g.driving_crease},
+                        {"points", g.path.size()}});
+    j["certificate_mismatch"] = g.certificate_mismatch;
+  }
+  j["branches"] = branches;
+  Json bifurcations = Json::array();
+  for (const auto& s : g.singular_points) {
+    std::vector<double> deg(s.angles.data(), s.angles.data() + s.angles.size());
+    for (double& d : deg) d *= kDeg;
+    bifurcations.push_back({{"parameter", s.driving_value * kDeg}, {"parameter_kind", "driving crease fold angle (deg)"},
+                            {"angles_deg", deg}, {"kind", "singular point (bordered determinant changes sign); location not refined"}});
+  }
+  j["bifurcations"] = bifurcations;
+  Json switches = Json::array();
+  for (const auto& s : g.sign_switches)
+    switches.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
+  j["mv_switches"] = switches;
+  if (g.verdict == Verdict::kNotRigidlyFoldable) {
+    Json o;
+    o["kind"] = "no folded point found near flat";
+    o["message"] = g.reason;
+    o["least_residual"] = g.least_residual;
+    Json worst = Json::array();
+    for (auto [v, r] : g.worst_vertices) worst.push_back({{"vertex", v}, {"residual", r}});
+    o["worst_vertices"] = worst;
+    if (g.wrong_sign_crease >= 0) o["crease_against_assignment"] = g.wrong_sign_crease;
+    o["starts_tried"] = g.starts_tried;
+    o["starts_converged_against_assignment"] = g.starts_wrong_sign;
+    j["obstruction"] = o;
+  } else {
+    j["obstruction"] = nullptr;
+  }
+  j["max_residual"] = g.max_residual;
+  j["interference"] = "local only (creases reaching 180 deg); global face-face test not yet implemented";
+  j["seconds"] = g.seconds;
+  return j;
+}
+
 }  // namespace
 
-Json foldability_json(const CreasePattern& p, const Topology& t, bool ignore_assignment) {
+Json foldability_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, bool force_general) {
   const auto start = std::chrono::steady_clock::now();
+  if (force_general) return general_json(p, t, ignore_assignment, "forced (--general)");
   const FoldabilityVerdict v = ignore_assignment ? verdict_ignoring_assignment(p, t) : verdict_with_assignment(p, t);
+  if (v.verdict == Verdict::kNotApplicable) {
+    try {
+      return general_json(p, t, ignore_assignment, "multiplier propagation not applicable: " + v.reason);
+    } catch (const std::runtime_error& e) {  // e.g. holes: no SE(3) hole closure yet
+      Json j;
+      j["verdict"] = to_string(Verdict::kUndecided);
+      j["rigidly_foldable"] = nullptr;
+      j["model"] = "none";
+      j["reason"] = std::string("general solver unavailable for this pattern: ") + e.what();
+      j["dof"] = 0;
+      j["branches"] = Json::array();
+      j["bifurcations"] = Json::array();
+      j["obstruction"] = nullptr;
+      j["max_residual"] = 0.0;
+      j["seconds"] = 0.0;
+      return j;
+    }
+  }
   Json j;
   j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
   j["verdict"] = to_string(v.verdict);
   if (v.verdict == Verdict::kRigidlyFoldable) j["rigidly_foldable"] = true;
   else if (v.verdict == Verdict::kNotRigidlyFoldable) j["rigidly_foldable"] = false;
   else j["rigidly_foldable"] = nullptr;  // not decided by the models available
-  j["model"] = v.verdict == Verdict::kNotApplicable ? "none (general loop-closure solver not yet available)" : v.model;
+  j["model"] = v.model;
+  j["model_choice"] = "every interior vertex is a flat-foldable degree-4 vertex: exact O(creases) model";
+  j["is_proof"] = true;
   j["reason"] = v.reason;
   j["dof"] = v.verdict == Verdict::kRigidlyFoldable ? v.dof : 0;
   Json branches = Json::array();

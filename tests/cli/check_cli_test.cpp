@@ -60,13 +60,39 @@ TEST(CheckCli, SquareTwistTypesFollowSeed001) {
   }
 }
 
-TEST(CheckCli, UndecidedOutsideTheModelSaysSo) {
+TEST(CheckCli, OutsideTheMultiplierModelTheGeneralSolverAnswersAndSaysHowSure) {
+  // A perturbed Miura is not flat-foldable: the general solver finds no folded point near
+  // flat, reports the least residual, and flags the "no" as numerical evidence.
   generators::MiuraParams m;
   m.rows = m.cols = 3;
   m.perturbation = 0.05;
   const auto j = check(generators::miura_ori(m), "perturbed");
-  EXPECT_TRUE(j["rigidly_foldable"].is_null());
-  EXPECT_EQ(j["verdict"], "not-applicable");
+  EXPECT_EQ(j["model"], "general-loop-closure");
+  EXPECT_EQ(j["rigidly_foldable"], false);
+  EXPECT_EQ(j["is_proof"], false);
+  ASSERT_FALSE(j["obstruction"].is_null());
+  EXPECT_GT(j["obstruction"]["least_residual"].get<double>(), 1e-8);
+  EXPECT_FALSE(j["obstruction"]["worst_vertices"].empty());
+}
+
+TEST(CheckCli, BothModelsAgreeOnMiuraAndSquareTwists) {
+  generators::MiuraParams m;
+  m.rows = 3;
+  m.cols = 4;
+  const auto exact = check(generators::miura_ori(m), "miura");
+  const auto general = check(generators::miura_ori(m), "miura", "--general");
+  EXPECT_EQ(general["model"], "general-loop-closure");
+  EXPECT_EQ(exact["rigidly_foldable"], general["rigidly_foldable"]);
+  EXPECT_EQ(exact["dof"], general["dof"]);
+  EXPECT_LE(general["max_residual"].get<double>(), 1e-12);
+  generators::SquareTwistParams params;
+  params.twist = 40 * 3.141592653589793 / 180;
+  using T = generators::SquareTwistType;
+  for (auto type : {T::Type1, T::Type2, T::Type3, T::Type4}) {
+    const auto a = check(generators::square_twist(params, type), "twist");
+    const auto b = check(generators::square_twist(params, type), "twist", "--general");
+    EXPECT_EQ(a["rigidly_foldable"], b["rigidly_foldable"]) << generators::to_string(type);
+  }
 }
 
 TEST(CheckCli, BadInputExitsTwo) {
