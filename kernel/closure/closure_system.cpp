@@ -1,10 +1,12 @@
 #include "kernel/closure/closure_system.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <stdexcept>
 #include <string>
 
+#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
@@ -26,10 +28,11 @@ ClosureSystem::ClosureSystem(const CreasePattern& pattern, const Topology& topol
       is_fixed_(pattern.num_edges(), false) {
   for (std::size_t c = 0; c < topology.components.size(); ++c) {
     const Component& comp = topology.components[c];
-    if (comp.holes > 0 || comp.genus > 0)
+    if (comp.genus > 0 || (comp.holes > 0 && !options.close_holes))
       throw std::runtime_error("closure system: component " + std::to_string(c) + " has " +
                                std::to_string(comp.holes) + " hole(s) and genus " + std::to_string(comp.genus) +
-                               "; SE(3) loop closure around holes not supported yet");
+                               "; SE(3) loop closure around holes not supported yet" +
+                               (comp.genus > 0 ? " for handles" : " unless ClosureOptions::close_holes is set"));
   }
   auto foldable_hinge = [&](int e) {
     return topology.edge_is_hinge[e] && is_foldable_crease(pattern.assignments[e]);
@@ -59,6 +62,33 @@ ClosureSystem::ClosureSystem(const CreasePattern& pattern, const Topology& topol
   for (int v : topology.interior_vertices) {
     const Fan& fan = topology.stars[v].fans.at(0);
     vertices_.push_back(VertexRow{v, fan.edges, fan.sectors});
+  }
+  if (options.close_holes) {
+    holes_ = find_hole_loops(pattern, topology);
+    if (!holes_.empty()) {
+      hole_geometry_.vertices = pattern.vertices;
+      hole_geometry_.edges = pattern.edges;
+      hole_geometry_.faces = pattern.faces;
+      const Eigen::VectorXd ref = reference_fold_angles(pattern, topology);
+      reference_angle_.assign(ref.data(), ref.data() + ref.size());
+      is_rigid_hinge_.assign(num_edges_, false);
+      for (int e = 0; e < num_edges_; ++e)
+        is_rigid_hinge_[e] = topology.edge_is_hinge[e] && !is_foldable_crease(pattern.assignments[e]);
+      Eigen::Vector3d lo = pattern.vertices[0], hi = pattern.vertices[0];
+      for (const auto& v : pattern.vertices) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+      }
+      length_scale_ = std::max((hi - lo).norm(), 1e-300);
+    }
+  }
+}
+
+void ClosureSystem::gather_hole(const HoleLoop& loop, const Eigen::VectorXd& x, std::vector<double>& theta) const {
+  theta.resize(loop.steps.size());
+  for (std::size_t i = 0; i < loop.steps.size(); ++i) {
+    const int e = loop.steps[i].edge;
+    theta[i] = is_rigid_hinge_[e] ? 0.0 : angle_of_edge(e, x) - reference_angle_[e];
   }
 }
 
@@ -111,6 +141,12 @@ Eigen::VectorXd ClosureSystem::residual(const Eigen::VectorXd& x) const {
     const CreaseEquality& eq = equalities_[q];
     r[3 * num_vertices() + static_cast<int>(q)] = angle_of_edge(eq.edge_a, x) - eq.sign * angle_of_edge(eq.edge_b, x);
   }
+  std::vector<double> theta;
+  for (int h = 0; h < num_holes(); ++h) {
+    gather_hole(holes_[h], x, theta);
+    r.segment<6>(hole_row_begin() + 6 * h) =
+        hole_closure_residual(hole_geometry_, holes_[h], std::span<const double>(theta), length_scale_);
+  }
   return r;
 }
 
@@ -122,6 +158,7 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
   std::vector<Eigen::Triplet<double>> triplets;
   std::size_t count = 2 * equalities_.size();
   for (const VertexRow& row : vertices_) count += 3 * row.edges.size();
+  for (const HoleLoop& loop : holes_) count += 6 * loop.steps.size();
   triplets.reserve(count);
 
   std::vector<double> angles;
@@ -146,6 +183,23 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
     residual[rowi] = angle_of_edge(eq.edge_a, x) - eq.sign * angle_of_edge(eq.edge_b, x);
     if (const int ca = unknown_of_edge_[eq.edge_a]; ca >= 0) triplets.emplace_back(rowi, ca, 1.0);
     if (const int cb = unknown_of_edge_[eq.edge_b]; cb >= 0) triplets.emplace_back(rowi, cb, -eq.sign);
+  }
+  std::vector<double> theta;
+  Eigen::Matrix<double, 6, 1> rh;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> jh;
+  for (int h = 0; h < num_holes(); ++h) {
+    const HoleLoop& loop = holes_[h];
+    const int row0 = hole_row_begin() + 6 * h;
+    gather_hole(loop, x, theta);
+    hole_closure_jacobian(hole_geometry_, loop, std::span<const double>(theta), length_scale_, rh, jh);
+    residual.segment<6>(row0) = rh;
+    for (std::size_t i = 0; i < loop.steps.size(); ++i) {
+      const int e = loop.steps[i].edge;
+      const int col = unknown_of_edge_[e];
+      if (col < 0 || is_rigid_hinge_[e]) continue;
+      // A crease crossed twice in one loop contributes twice: triplets add up.
+      for (int d = 0; d < 6; ++d) triplets.emplace_back(row0 + d, col, jh(d, static_cast<int>(i)));
+    }
   }
   jacobian.resize(num_rows(), num_unknowns());
   jacobian.setFromTriplets(triplets.begin(), triplets.end());

@@ -13,15 +13,22 @@
 // Rows: 3 per interior vertex (Topology::interior_vertices, in that order), rows 3k..3k+2
 //   for the k-th one: r_v = log(prod_i Rx(rho_i) Rz(alpha_i)) over the vertex's fan in its
 //   counter-clockwise order (vertex_closure_residual), radians. Then one row per equality
-//   constraint rho_a - s * rho_b (radians), s = +1 or -1 (symmetry).
+//   constraint rho_a - s * rho_b (radians), s = +1 or -1 (symmetry). Then, only with
+//   ClosureOptions::close_holes, 6 rows per hole (hole_closure.hpp, find_hole_loops order):
+//   the SE(3) closure of a loop of faces around the hole, rotation log (radians) then
+//   translation / length scale (the reference bounding-box diagonal; dimensionless). In
+//   these rows a crease turns by rho - rho_ref (reference_fold_angles of the pattern's own
+//   coordinates, so a 3D reference such as a tube is its own zero); F/J hinges keep their
+//   reference angle there.
 //
-// Limits: a sheet with holes or handles needs SE(3) loop closures around them, which are
-//   not implemented yet; the constructor throws std::runtime_error for such a sheet.
+// Limits: handles (genus > 0) are not supported; the constructor throws std::runtime_error
+//   for them, and for holes unless close_holes is set.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <utility>
 #include <vector>
 
+#include "kernel/closure/hole_closure.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -40,6 +47,8 @@ struct ClosureOptions {
   std::vector<std::pair<int, double>> fixed;
   // Extra rows rho_a - sign * rho_b = 0.
   std::vector<CreaseEquality> equalities;
+  // Add the 6 SE(3) rows per hole (otherwise a sheet with holes is rejected).
+  bool close_holes = false;
 };
 
 class ClosureSystem {
@@ -47,12 +56,17 @@ class ClosureSystem {
   // Inputs: pattern and its topology (build_topology(pattern)); options as above.
   // Throws std::invalid_argument for a bad fixed/equality edge (out of range, not a
   // foldable hinge, sign not +-1, fixed twice) and std::runtime_error("... holes not
-  // supported yet") if some component has holes or genus > 0.
+  // supported yet") if some component has genus > 0, or holes without close_holes.
   ClosureSystem(const CreasePattern& pattern, const Topology& topology, const ClosureOptions& options = {});
 
   int num_unknowns() const { return static_cast<int>(free_edges_.size()); }
   int num_vertices() const { return static_cast<int>(vertices_.size()); }  // interior vertices with rows
-  int num_rows() const { return 3 * num_vertices() + static_cast<int>(equalities_.size()); }
+  int num_rows() const { return hole_row_begin() + 6 * num_holes(); }
+  int num_holes() const { return static_cast<int>(holes_.size()); }  // hole loops with rows
+  // First row of the hole blocks (rows hole_row_begin() + 6k .. +5 for hole k).
+  int hole_row_begin() const { return 3 * num_vertices() + static_cast<int>(equalities_.size()); }
+  const HoleLoop& hole_loop(int k) const { return holes_[k]; }
+  double length_scale() const { return length_scale_; }
   int num_edges() const { return num_edges_; }
 
   // Edge of unknown k; unknown of edge e (-1 if e is not a free crease).
@@ -94,6 +108,14 @@ class ClosureSystem {
   std::vector<bool> is_fixed_;
   std::vector<VertexRow> vertices_;
   std::vector<CreaseEquality> equalities_;
+  CreasePattern hole_geometry_;             // vertices, edges, faces of the pattern (hole rows only)
+  std::vector<HoleLoop> holes_;
+  std::vector<double> reference_angle_;     // per edge (hole rows only)
+  std::vector<bool> is_rigid_hinge_;        // F/J hinge: keeps its reference angle in hole rows
+  double length_scale_ = 1.0;
+
+  // Relative angles theta of a hole loop's steps.
+  void gather_hole(const HoleLoop& loop, const Eigen::VectorXd& x, std::vector<double>& theta) const;
 
   // Per-vertex fold angles gathered from x.
   void gather(const VertexRow& row, const Eigen::VectorXd& x, std::vector<double>& angles) const;

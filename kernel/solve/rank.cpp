@@ -1,5 +1,7 @@
 #include "kernel/solve/rank.hpp"
 
+#include <vector>
+
 #include <Eigen/Dense>
 #include <Eigen/SPQRSupport>
 #include <algorithm>
@@ -64,7 +66,10 @@ RankResult sparse_rank(const Eigen::SparseMatrix<double>& J, const RankOptions& 
     // Null vectors in the permuted order: z = [-R11^{-1} R12 e_k; e_k], then x = P z.
     const Eigen::MatrixXd R12 = Eigen::MatrixXd(R.topRightCorner(rank, res.dof));
     Eigen::MatrixXd top = R.topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solve(R12);
-    const auto& perm = qr.colsPermutation().indices();
+    // colsPermutation() returns a temporary view: copy its indices before using them
+    // (binding a reference to them dangles; ASan reports stack-use-after-scope).
+    const auto cols_permutation = qr.colsPermutation();
+    const std::vector<Eigen::Index> perm(cols_permutation.indices().data(), cols_permutation.indices().data() + res.cols);
     Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(res.cols, res.dof);
     for (int i = 0; i < rank; ++i) Z.row(perm[i]) = -top.row(i);
     for (int k = 0; k < res.dof; ++k) Z(perm[rank + k], k) = 1.0;
