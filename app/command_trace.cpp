@@ -40,6 +40,7 @@
 #include "app/commands.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
+#include "kernel/closure/vertex_residuals.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
@@ -89,18 +90,6 @@ struct Branch {
   double max_residual = 0, max_mismatch = 0;
 };
 
-double max_vertex_residual(const Topology& t, const Eigen::VectorXd& rho) {
-  double worst = 0;
-  std::vector<double> angles;
-  for (int v : t.interior_vertices) {
-    const Fan& fan = t.stars[v].fans[0];
-    angles.clear();
-    for (int e : fan.edges) angles.push_back(rho[e]);
-    worst = std::max(worst, vertex_closure_residual(fan.sectors, angles).norm());
-  }
-  return worst;
-}
-
 double assigned_sign(Assignment a) { return a == Assignment::Mountain ? -1.0 : 1.0; }
 
 std::string deg_text(double radians) {
@@ -125,7 +114,7 @@ void finish_steps(Branch& b, const CreasePattern& p, const Topology& t, const Ei
     if (p.assignments[e] == Assignment::Mountain || p.assignments[e] == Assignment::Valley) last[e] = 1;
   for (std::size_t k = 0; k < b.steps.size(); ++k) {
     Step& s = b.steps[k];
-    s.residual = max_vertex_residual(t, s.rho);
+    s.residual = max_vertex_closure_residual(t, s.rho);
     s.folded = place_faces(p, t, s.rho, ref);
     b.max_residual = std::max(b.max_residual, s.residual);
     b.max_mismatch = std::max(b.max_mismatch, s.folded.max_mismatch);

@@ -6,25 +6,13 @@
 
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
-#include "kernel/vertex/vertex_closure.hpp"
+#include "kernel/closure/vertex_residuals.hpp"
 
 namespace rigidfold::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
 constexpr double kDeg = 180.0 / std::numbers::pi;
-
-// Largest vertex-closure residual (rad) over all interior vertices at fold angles rho.
-double max_vertex_residual(const Topology& t, const Eigen::VectorXd& rho) {
-  double worst = 0;
-  for (int v : t.interior_vertices) {
-    const Fan& fan = t.stars[v].fans[0];
-    std::vector<double> angles;
-    for (int e : fan.edges) angles.push_back(rho[e]);
-    worst = std::max(worst, vertex_closure_residual(fan.sectors, angles).norm());
-  }
-  return worst;
-}
 
 Json obstruction_json(const Obstruction& o) {
   Json j;
@@ -161,7 +149,7 @@ Json foldability_json(const CreasePattern& p, const Topology& t, bool ignore_ass
         std::vector<double> params(fam.num_components, 0.0);
         params[c] = limiting >= 0 ? fam.parameter_for(limiting, lead) : std::tan(lead / 2);
         const Eigen::VectorXd rho = fam.angles(params);
-        worst = std::max(worst, max_vertex_residual(t, rho));
+        worst = std::max(worst, max_vertex_closure_residual(t, rho));
         reached = std::max(reached, rho.cwiseAbs().maxCoeff());
         for (int e = 0; e < p.num_edges(); ++e) {
           if (p.assignments[e] == Assignment::Mountain && rho[e] > 0) signs_ok = false;

@@ -8,6 +8,7 @@
 
 #include "data/generators/miura.hpp"
 #include "kernel/geometry/face_placement.hpp"
+#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
@@ -61,9 +62,7 @@ void BM_FoldMiuraByFacePlacement(benchmark::State& state) {
   const auto params = miura_params(static_cast<int>(state.range(0)));
   const CreasePattern p = generators::miura_ori(params);
   const Topology t = build_topology(p);
-  const auto angles = generators::miura_fold_angles(p, params, 2.0);
-  Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) rho[e] = angles[e].value_or(0.0);
+  const Eigen::VectorXd rho = fold_angle_vector(generators::miura_fold_angles(p, params, 2.0));
   const Eigen::VectorXd ref = Eigen::VectorXd::Zero(p.num_edges());
   double mismatch = 0;
   for (auto _ : state) {

@@ -11,6 +11,7 @@
 #include "data/generators/miura.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
+#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/newton_projection.hpp"
 
@@ -41,10 +42,7 @@ void BM_GeneralCorrector(benchmark::State& state) {
   const CreasePattern p = generators::miura_ori(params);
   const Topology t = build_topology(p);
   const ClosureSystem system(p, t);
-  const auto exact = generators::miura_fold_angles(p, params, 1.2);
-  Eigen::VectorXd edges = Eigen::VectorXd::Zero(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) edges[e] = exact[e].value_or(0.0);
-  const Eigen::VectorXd x_exact = system.unknowns_from_edges(edges);
+  const Eigen::VectorXd x_exact = system.unknowns_from_edges(fold_angle_vector(generators::miura_fold_angles(p, params, 1.2)));
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
   Eigen::VectorXd x0 = x_exact;

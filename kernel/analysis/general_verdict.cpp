@@ -66,8 +66,6 @@ std::vector<int> driving_creases(const ClosureSystem& sys, const Topology& t, in
   return out;
 }
 
-Eigen::MatrixXd dense(const Eigen::SparseMatrix<double>& J) { return Eigen::MatrixXd(J); }
-
 // Bordered-determinant test for DOF-1 traces. Between consecutive points x0, x1 the rows
 // S (n-1 of them) are chosen at x0 by column-pivoted QR of J(x0)^T, and
 //   d_i = det [J_S(x_i); t_i^T]   (t_1 oriented along t_0)

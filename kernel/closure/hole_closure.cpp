@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "kernel/geometry/face_placement.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
@@ -36,10 +37,7 @@ Eigen::Isometry3d loop_product(const CreasePattern& p, const HoleLoop& loop, std
     const Eigen::Vector3d d = (s.side == 0 ? 1.0 : -1.0) * (p.vertices[p.edges[s.edge][1]] - v0).normalized();
     if (w) w->col(i) = P.linear() * d;
     if (a) a->col(i) = P * v0;
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = Eigen::AngleAxisd(theta[i], d).toRotationMatrix();
-    T.translation() = v0 - T.linear() * v0;
-    P = P * T;
+    P = P * hinge_motion(p, s.edge, s.side, theta[i]);
   }
   return P;
 }

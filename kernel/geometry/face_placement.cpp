@@ -3,9 +3,7 @@
 #include <deque>
 
 namespace rigidfold {
-namespace {
 
-// Rigid motion that turns the face on side `side` of edge e (0: left of v0->v1) by `angle`.
 Eigen::Isometry3d hinge_motion(const CreasePattern& p, int e, int side, double angle) {
   const Eigen::Vector3d a = p.vertices[p.edges[e][0]];
   const Eigen::Vector3d d = (p.vertices[p.edges[e][1]] - a).normalized();
@@ -16,8 +14,6 @@ Eigen::Isometry3d hinge_motion(const CreasePattern& p, int e, int side, double a
   m.translate(-a);
   return m;
 }
-
-}  // namespace
 
 FoldedGeometry place_faces(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& rho,
                            const Eigen::VectorXd& rho_ref) {

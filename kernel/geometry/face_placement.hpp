@@ -31,6 +31,10 @@ struct FoldedGeometry {
   double relative_mismatch() const { return max_mismatch / pattern_size; }
 };
 
+// Rigid motion turning the face on side `side` of edge e (0: left of v0 -> v1) by `angle`
+// (radians) about the crease line, with the FOLD sign: valley > 0 lifts the left face.
+Eigen::Isometry3d hinge_motion(const CreasePattern& pattern, int edge, int side, double angle);
+
 FoldedGeometry place_faces(const CreasePattern& pattern, const Topology& topology, const Eigen::VectorXd& fold_angles,
                            const Eigen::VectorXd& reference_angles);
 

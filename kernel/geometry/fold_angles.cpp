@@ -26,11 +26,12 @@ Eigen::VectorXd reference_fold_angles(const CreasePattern& p, const Topology& t)
   return rho;
 }
 
-Eigen::VectorXd stored_fold_angles(const CreasePattern& p) {
-  Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e)
-    if (p.fold_angles[e]) rho[e] = *p.fold_angles[e];
+Eigen::VectorXd fold_angle_vector(const std::vector<std::optional<double>>& angles) {
+  Eigen::VectorXd rho(static_cast<Eigen::Index>(angles.size()));
+  for (std::size_t e = 0; e < angles.size(); ++e) rho[static_cast<Eigen::Index>(e)] = angles[e].value_or(0.0);
   return rho;
 }
+
+Eigen::VectorXd stored_fold_angles(const CreasePattern& p) { return fold_angle_vector(p.fold_angles); }
 
 }  // namespace rigidfold

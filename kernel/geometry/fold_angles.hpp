@@ -16,6 +16,9 @@ namespace rigidfold {
 // assignment (V: +pi, M: -pi). Non-hinge edges get 0.
 Eigen::VectorXd reference_fold_angles(const CreasePattern& pattern, const Topology& topology);
 
+// One fold angle per edge (radians) from optional angles, missing entries taken as 0.
+Eigen::VectorXd fold_angle_vector(const std::vector<std::optional<double>>& angles);
+
 // The file's edges_foldAngle (radians) with null/missing entries taken as 0.
 Eigen::VectorXd stored_fold_angles(const CreasePattern& pattern);
 

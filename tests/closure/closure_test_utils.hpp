@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "data/generators/miura.hpp"
+#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 
@@ -52,10 +53,7 @@ inline std::vector<double> random_directions(int n, std::mt19937_64& rng, double
 
 // Closed-form Miura state as per-edge angles (nullopt -> 0).
 inline Eigen::VectorXd miura_edge_angles(const CreasePattern& p, const generators::MiuraParams& m, double straight) {
-  const auto a = generators::miura_fold_angles(p, m, straight);
-  Eigen::VectorXd rho(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) rho[e] = a[e].value_or(0.0);
-  return rho;
+  return fold_angle_vector(generators::miura_fold_angles(p, m, straight));
 }
 
 inline Eigen::VectorXd random_vector(int n, std::mt19937_64& rng, double amplitude) {

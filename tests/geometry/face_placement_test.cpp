@@ -64,7 +64,9 @@ TEST(FacePlacement, ClosedFoldAnglesGiveZeroMismatchAndRigidFaces) {
       const Topology tf = build_topology(folded);
       const Eigen::VectorXd measured = reference_fold_angles(folded, tf);
       for (int e = 0; e < p.num_edges(); ++e)
-        if (t.edge_is_hinge[e]) EXPECT_NEAR(measured[e], rho[e], 1e-12) << "edge " << e;
+        if (t.edge_is_hinge[e]) {
+          EXPECT_NEAR(measured[e], rho[e], 1e-12) << "edge " << e;
+        }
     }
   }
 }

@@ -25,9 +25,7 @@ TEST(MiuraFold, ClosedFormAnglesPlaceFacesWithoutMismatch) {
       const CreasePattern p = generators::miura_ori(m);
       const Topology t = build_topology(p);
       for (double straight : {1e-6, 0.4, 1.7, 3.0}) {
-        const auto angles = generators::miura_fold_angles(p, m, straight);
-        Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-        for (int e = 0; e < p.num_edges(); ++e) rho[e] = angles[e].value_or(0.0);
+        const Eigen::VectorXd rho = fold_angle_vector(generators::miura_fold_angles(p, m, straight));
         const FoldedGeometry g = place_faces(p, t, rho, Eigen::VectorXd::Zero(p.num_edges()));
         EXPECT_LE(g.relative_mismatch(), 1e-12) << n << "x" << n + 1 << " alpha " << alpha_deg << " straight " << straight;
         EXPECT_GT(g.non_tree_hinges, 0);
@@ -50,10 +48,7 @@ TEST(MiuraFold, WrongAnglesShowAsMismatch) {
   m.rows = m.cols = 6;
   const CreasePattern p = generators::miura_ori(m);
   const Topology t = build_topology(p);
-  const auto angles = generators::miura_fold_angles(p, m, 1.2);
-  Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) rho[e] = angles[e].value_or(0.0);
-  rho *= 1.001;  // a 0.1% error in every angle breaks the closure
+  const Eigen::VectorXd rho = 1.001 * fold_angle_vector(generators::miura_fold_angles(p, m, 1.2));  // a 0.1% error in every angle breaks the closure
   const FoldedGeometry g = place_faces(p, t, rho, Eigen::VectorXd::Zero(p.num_edges()));
   EXPECT_GT(g.relative_mismatch(), 1e-5);
 }
