@@ -1,8 +1,10 @@
 // rigidfold vertex s4r --twists A,B,C,D --input DEG [--json]
+// rigidfold vertex miura --alpha1 DEG --alpha2 DEG --theta DEG [--json]
 // Spherical 4R linkage (a degree-4 vertex) in the kernel's convention: twists alpha12,
 // alpha23, alpha34, alpha41 in degrees (any values), joint angles = fold angles
 // (valley > 0), closure Rx(t1) Rz(a12) Rx(t2) Rz(a23) Rx(t3) Rz(a34) Rx(t4) Rz(a41) = I.
 // Seeds 001/003 write theta with mountain positive: theta_seed = -theta here.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -11,6 +13,7 @@
 
 #include "app/commands.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/spherical_4r.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
@@ -18,6 +21,68 @@ namespace rigidfold::cli {
 namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
+
+// Asymmetric Miura vertex closed form (kernel/vertex/miura_vertex.hpp). theta is half the
+// fold angle of the incoming spinal crease; flags are in degrees, checked here so that the
+// error names the flag.
+void add_miura_command(CLI::App& vertex) {
+  auto* miura = vertex.add_subcommand("miura", "Asymmetric Miura vertex: phi, psi and fold angles from alpha1, alpha2, theta");
+  struct Args {
+    double alpha1 = 0, alpha2 = 0, theta = 0;
+    bool json = false;
+  };
+  auto a = std::make_shared<Args>();
+  miura->add_option("--alpha1", a->alpha1, "angle between the outgoing spinal crease and peripheral crease b, degrees in (0, 90)")->required();
+  miura->add_option("--alpha2", a->alpha2, "angle between the outgoing spinal crease and peripheral crease d, degrees in (0, 90)")->required();
+  miura->add_option("--theta", a->theta, "half the fold angle of the incoming spinal crease, degrees, valley > 0, |theta| <= theta_limit")->required();
+  miura->add_flag("--json", a->json, "print JSON");
+  miura->callback([a] {
+    for (const auto& [flag, v] : {std::pair{"--alpha1", a->alpha1}, std::pair{"--alpha2", a->alpha2}})
+      if (!std::isfinite(v) || !(v > 0.0) || !(v < 90.0)) throw InputError(flag, "must be in (0, 90) degrees");
+    if (!std::isfinite(a->theta)) throw InputError("--theta", "must be finite");
+    const double limit = miura_theta_limit(a->alpha1 / kDeg, a->alpha2 / kDeg);
+    // Compared in degrees, as printed: --theta equal to the printed limit is accepted
+    // (and clamped to the limit in radians against the last-bit rounding of the conversion).
+    if (std::fabs(a->theta) > limit * kDeg)
+      throw InputError("--theta", "|theta| must not exceed theta_limit = " + std::to_string(limit * kDeg) + " degrees");
+    const double theta = std::clamp(a->theta / kDeg, -limit, limit);
+    const MiuraVertexState st = miura_vertex(a->alpha1 / kDeg, a->alpha2 / kDeg, theta);
+    nlohmann::ordered_json j;
+    j["alpha1_deg"] = a->alpha1;
+    j["alpha2_deg"] = a->alpha2;
+    j["theta_deg"] = a->theta;
+    j["phi_deg"] = st.phi * kDeg;
+    j["psi_deg"] = st.psi * kDeg;
+    j["theta_limit_deg"] = st.theta_limit * kDeg;
+    nlohmann::ordered_json folds = nlohmann::ordered_json::array();
+    for (int i = 0; i < 4; ++i)
+      folds.push_back({{"crease", std::string(kMiuraCreaseNames[i])},
+                       {"direction_deg", st.flat_directions[i] * kDeg},
+                       {"fold_angle_deg", st.fold_angles[i] * kDeg}});
+    j["fold_angles_deg"] = folds;
+    j["sectors_deg"] = {st.sectors[0] * kDeg, st.sectors[1] * kDeg, st.sectors[2] * kDeg, st.sectors[3] * kDeg};
+    j["closure_residual_rad"] =
+        vertex_closure_residual(std::span<const double>(st.sectors.data(), 4), std::span<const double>(st.fold_angles.data(), 4)).norm();
+    if (a->json) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    char line[256];
+    std::snprintf(line, sizeof line, "Miura vertex, alpha1 = %.12g deg, alpha2 = %.12g deg, theta = %.12g deg (limit +-%.12g deg)\n",
+                  a->alpha1, a->alpha2, a->theta, st.theta_limit * kDeg);
+    std::cout << line;
+    std::snprintf(line, sizeof line, "  phi = %.12g deg, psi = %.12g deg\n", st.phi * kDeg, st.psi * kDeg);
+    std::cout << line;
+    std::cout << "  fold angles (valley > 0), creases CCW:\n";
+    for (int i = 0; i < 4; ++i) {
+      std::snprintf(line, sizeof line, "    %-13s at %8.4f deg: %.12g deg\n", std::string(kMiuraCreaseNames[i]).c_str(),
+                    st.flat_directions[i] * kDeg, st.fold_angles[i] * kDeg);
+      std::cout << line;
+    }
+    std::snprintf(line, sizeof line, "  closure residual %.2e rad\n", j["closure_residual_rad"].get<double>());
+    std::cout << line;
+  });
+}
 
 }  // namespace
 
@@ -34,6 +99,7 @@ void add_vertex_command(CLI::App& app) {
   s4r->add_option("--twists", a->twists, "alpha12,alpha23,alpha34,alpha41 in degrees")->required()->delimiter(',')->expected(4);
   s4r->add_option("--input", a->input, "joint angle 1 (fold angle of crease 1) in degrees, valley > 0")->required();
   s4r->add_flag("--json", a->json, "print JSON");
+  add_miura_command(*vertex);
   s4r->callback([a] {
     if (a->twists.size() != 4) throw InputError("--twists", "needs exactly 4 values, got " + std::to_string(a->twists.size()));
     for (std::size_t i = 0; i < 4; ++i)

@@ -13,5 +13,6 @@ void add_vertex_command(CLI::App& app);    // rigidfold vertex s4r ...
 void add_generate_command(CLI::App& app);  // rigidfold generate KIND ... --out P.fold
 void add_report_command(CLI::App& app);    // rigidfold report DIR --out OUTDIR (main job)
 void add_trace_command(CLI::App& app);
+void add_string_command(CLI::App& app);   // rigidfold string forward|design ... (origami strings)
 
 }  // namespace rigidfold::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   rigidfold::cli::add_generate_command(app);
   rigidfold::cli::add_report_command(app);
   rigidfold::cli::add_trace_command(app);
+  rigidfold::cli::add_string_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

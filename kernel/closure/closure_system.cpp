@@ -82,6 +82,52 @@ ClosureSystem::ClosureSystem(const CreasePattern& pattern, const Topology& topol
       length_scale_ = std::max((hi - lo).norm(), 1e-300);
     }
   }
+  build_jacobian_pattern();
+}
+
+void ClosureSystem::build_jacobian_pattern() {
+  // (row, col) of every entry evaluate() emits, in its emission order.
+  std::vector<std::pair<int, int>> entries;
+  for (int k = 0; k < num_vertices(); ++k)
+    for (int e : vertices_[k].edges)
+      if (const int col = unknown_of_edge_[e]; col >= 0)
+        for (int d = 0; d < 3; ++d) entries.emplace_back(3 * k + d, col);
+  const int base = 3 * num_vertices();
+  for (std::size_t q = 0; q < equalities_.size(); ++q) {
+    const int rowi = base + static_cast<int>(q);
+    if (const int ca = unknown_of_edge_[equalities_[q].edge_a]; ca >= 0) entries.emplace_back(rowi, ca);
+    if (const int cb = unknown_of_edge_[equalities_[q].edge_b]; cb >= 0) entries.emplace_back(rowi, cb);
+  }
+  for (int h = 0; h < num_holes(); ++h)
+    for (const auto& step : holes_[h].steps)
+      if (const int col = unknown_of_edge_[step.edge]; col >= 0 && !is_rigid_hinge_[step.edge])
+        for (int d = 0; d < 6; ++d) entries.emplace_back(hole_row_begin() + 6 * h + d, col);
+
+  // Counting sort by column, then by row inside each (short) column; repeated (row, col)
+  // pairs share one slot, so their contributions add up as the triplets used to.
+  const int n = num_unknowns();
+  std::vector<int> count(n + 1, 0);
+  for (const auto& rc : entries) ++count[rc.second + 1];
+  for (int c = 0; c < n; ++c) count[c + 1] += count[c];
+  std::vector<int> order(entries.size());
+  {
+    std::vector<int> next(count.begin(), count.end() - 1);
+    for (std::size_t t = 0; t < entries.size(); ++t) order[next[entries[t].second]++] = static_cast<int>(t);
+  }
+  jac_outer_.assign(n + 1, 0);
+  jac_inner_.clear();
+  jac_slot_.assign(entries.size(), -1);
+  for (int c = 0; c < n; ++c) {
+    auto first = order.begin() + count[c], last = order.begin() + count[c + 1];
+    std::sort(first, last, [&](int a, int b) { return entries[a].first < entries[b].first || (entries[a].first == entries[b].first && a < b); });
+    for (auto it = first; it != last; ++it) {
+      const int row = entries[*it].first;
+      if (jac_inner_.size() == static_cast<std::size_t>(jac_outer_[c]) || jac_inner_.back() != row)
+        jac_inner_.push_back(row);
+      jac_slot_[*it] = static_cast<int>(jac_inner_.size()) - 1;
+    }
+    jac_outer_[c + 1] = static_cast<int>(jac_inner_.size());
+  }
 }
 
 void ClosureSystem::gather_hole(const HoleLoop& loop, const Eigen::VectorXd& x, std::vector<double>& theta) const {
@@ -155,11 +201,22 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
   if (x.size() != num_unknowns())
     throw std::invalid_argument("closure system: expected " + std::to_string(num_unknowns()) + " unknowns");
   residual.resize(num_rows());
-  std::vector<Eigen::Triplet<double>> triplets;
-  std::size_t count = 2 * equalities_.size();
-  for (const VertexRow& row : vertices_) count += 3 * row.edges.size();
-  for (const HoleLoop& loop : holes_) count += 6 * loop.steps.size();
-  triplets.reserve(count);
+  // Give the caller's matrix the fixed pattern unless it already has it (the usual case in
+  // a Newton loop), then zero its values and accumulate every entry into its slot.
+  const int nnz = static_cast<int>(jac_inner_.size());
+  const bool has_pattern = jacobian.rows() == num_rows() && jacobian.cols() == num_unknowns() &&
+                           jacobian.isCompressed() && jacobian.nonZeros() == nnz &&
+                           std::equal(jac_outer_.begin(), jac_outer_.end(), jacobian.outerIndexPtr()) &&
+                           std::equal(jac_inner_.begin(), jac_inner_.end(), jacobian.innerIndexPtr());
+  if (!has_pattern) {
+    jacobian.resize(num_rows(), num_unknowns());
+    jacobian.resizeNonZeros(nnz);
+    std::copy(jac_outer_.begin(), jac_outer_.end(), jacobian.outerIndexPtr());
+    std::copy(jac_inner_.begin(), jac_inner_.end(), jacobian.innerIndexPtr());
+  }
+  double* values = jacobian.valuePtr();
+  std::fill(values, values + nnz, 0.0);
+  std::size_t t = 0;  // entry counter, in build_jacobian_pattern's emission order
 
   std::vector<double> angles;
   Eigen::Vector3d r;
@@ -170,10 +227,9 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
     vertex_closure_jacobian(std::span<const double>(row.sectors), std::span<const double>(angles), r, jv);
     residual.segment<3>(3 * k) = r;
     for (std::size_t i = 0; i < row.edges.size(); ++i) {
-      const int col = unknown_of_edge_[row.edges[i]];
-      if (col < 0) continue;
-      // A crease met twice in one fan (degenerate input) contributes twice: triplets add up.
-      for (int d = 0; d < 3; ++d) triplets.emplace_back(3 * k + d, col, jv(d, static_cast<int>(i)));
+      if (unknown_of_edge_[row.edges[i]] < 0) continue;
+      // A crease met twice in one fan (degenerate input) contributes twice: slots add up.
+      for (int d = 0; d < 3; ++d) values[jac_slot_[t++]] += jv(d, static_cast<int>(i));
     }
   }
   const int base = 3 * num_vertices();
@@ -181,8 +237,8 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
     const CreaseEquality& eq = equalities_[q];
     const int rowi = base + static_cast<int>(q);
     residual[rowi] = angle_of_edge(eq.edge_a, x) - eq.sign * angle_of_edge(eq.edge_b, x);
-    if (const int ca = unknown_of_edge_[eq.edge_a]; ca >= 0) triplets.emplace_back(rowi, ca, 1.0);
-    if (const int cb = unknown_of_edge_[eq.edge_b]; cb >= 0) triplets.emplace_back(rowi, cb, -eq.sign);
+    if (unknown_of_edge_[eq.edge_a] >= 0) values[jac_slot_[t++]] += 1.0;
+    if (unknown_of_edge_[eq.edge_b] >= 0) values[jac_slot_[t++]] += -eq.sign;
   }
   std::vector<double> theta;
   Eigen::Matrix<double, 6, 1> rh;
@@ -195,14 +251,11 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
     residual.segment<6>(row0) = rh;
     for (std::size_t i = 0; i < loop.steps.size(); ++i) {
       const int e = loop.steps[i].edge;
-      const int col = unknown_of_edge_[e];
-      if (col < 0 || is_rigid_hinge_[e]) continue;
-      // A crease crossed twice in one loop contributes twice: triplets add up.
-      for (int d = 0; d < 6; ++d) triplets.emplace_back(row0 + d, col, jh(d, static_cast<int>(i)));
+      if (unknown_of_edge_[e] < 0 || is_rigid_hinge_[e]) continue;
+      // A crease crossed twice in one loop contributes twice: slots add up.
+      for (int d = 0; d < 6; ++d) values[jac_slot_[t++]] += jh(d, static_cast<int>(i));
     }
   }
-  jacobian.resize(num_rows(), num_unknowns());
-  jacobian.setFromTriplets(triplets.begin(), triplets.end());
 }
 
 }  // namespace rigidfold

@@ -117,6 +117,14 @@ class ClosureSystem {
   // Relative angles theta of a hole loop's steps.
   void gather_hole(const HoleLoop& loop, const Eigen::VectorXd& x, std::vector<double>& theta) const;
 
+  // Fixed CSC pattern of the Jacobian (built once by the constructor) and, for every entry
+  // evaluate() produces (vertex fans, then equalities, then hole loops, in that order), the
+  // position of its value in that pattern. evaluate() then fills values in place: O(nnz),
+  // no sorting or allocation once the caller's matrix has the pattern.
+  std::vector<int> jac_outer_, jac_inner_;
+  std::vector<int> jac_slot_;
+  void build_jacobian_pattern();
+
   // Per-vertex fold angles gathered from x.
   void gather(const VertexRow& row, const Eigen::VectorXd& x, std::vector<double>& angles) const;
   double angle_of_edge(int e, const Eigen::VectorXd& x) const;

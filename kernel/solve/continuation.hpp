@@ -2,13 +2,17 @@
 // 1-DOF pseudo-arclength continuation along the constraint manifold r(x) = 0 of a
 // ClosureSystem (DESIGN.md, "Continuation").
 //
-// At a point x_k on the manifold the tangent t_k is the unit null vector of J(x_k)
-// (jacobian_rank), oriented to continue the previous tangent (the first one along
-// `direction`). Predictor x_p = x_k + h t_k; corrector: minimum-norm Gauss-Newton on the
-// augmented system [r(x); t_k . (x - x_k) - h] = 0 (CHOLMOD on A A^T + lambda I, A = the
-// augmented Jacobian). The step h grows by 1.5 after a corrector that converges in <= 3
-// iterations and is halved after a failure (not converged, or the DOF at the new point is
-// not 1, or the tangent turned by more than 0.5 rad).
+// At a point x_k the tangent t_k is the unit null vector of J(x_k), oriented to continue the
+// previous tangent (the first one along `direction`): from jacobian_rank (which also checks
+// DOF = 1) for up to 2000 unknowns, above that by inverse iteration on the corrector's
+// factorisation (the DOF is then not re-checked at every point). Predictor
+// x_p = x_k + h t_k; corrector: Newton on the augmented system
+// [r(x); t_k . (x - x_k) - h] = 0, each step the exact solution of the augmented linear
+// system built from the minimum-norm step and the null vector of J (MinimumNormSolver:
+// CHOLMOD on J^T J + lambda I, one symbolic analysis for the whole trace). The step h grows
+// by 1.5 after a corrector that converges in <= 3 iterations and is halved after a failure
+// (not converged, or the DOF at the new point is not 1, or the tangent turned by more than
+// 0.5 rad).
 //
 // Units: x, h (arclength in unknown space) and residuals in radians.
 #include <Eigen/Core>

@@ -11,15 +11,239 @@ namespace rigidfold {
 
 namespace {
 
-bool same_pattern(const Eigen::SparseMatrix<double>& A, const std::vector<int>& outer, const std::vector<int>& inner) {
-  if (static_cast<std::size_t>(A.outerSize() + 1) != outer.size() ||
-      static_cast<std::size_t>(A.nonZeros()) != inner.size())
-    return false;
-  return std::equal(outer.begin(), outer.end(), A.outerIndexPtr()) &&
-         std::equal(inner.begin(), inner.end(), A.innerIndexPtr());
+int cholmod_ordering(FactorOrdering o) {
+  switch (o) {
+    case FactorOrdering::kAmd: return CHOLMOD_AMD;
+    case FactorOrdering::kMetis: return CHOLMOD_METIS;
+    case FactorOrdering::kNestedDissection: return CHOLMOD_NESDIS;
+    case FactorOrdering::kDefault: break;
+  }
+  return -1;
 }
 
 }  // namespace
+
+// The symbolic side is built once from J's pattern:
+//   - free[c]: index of unknown c among the kept columns (-1 if held);
+//   - rows of J grouped into runs of consecutive rows with the same kept columns (the 3
+//     rows of a vertex share its creases), each with its column list and, for every pair
+//     (a >= b) of that list, the slot of entry (col a, col b) in G's lower triangle;
+//   - for each row, the positions in J's value array of its entries, in the run's order.
+struct MinimumNormSolver::Impl {
+  int m = 0, n = 0, nf = 0;
+  std::vector<int> free;                 // n
+  std::vector<int> kept;                 // nf: unknown of each kept column
+  std::vector<int> run_begin;            // runs + 1: first row of each run
+  std::vector<int> run_cols_begin;       // runs + 1: into run_cols
+  std::vector<int> run_cols;             // kept-column indices of each run
+  std::vector<int> run_pairs_begin;      // runs + 1: into pair_slot
+  std::vector<int> pair_slot;            // G value slot of each pair (a, b <= a), row-major
+  std::vector<int> row_vals;             // per row, J value positions, in its run's column order
+  std::vector<int> row_vals_begin;       // m + 1
+  std::vector<int> diag_slot;            // nf: G value slot of each diagonal entry
+  Eigen::SparseMatrix<double> G;         // nf x nf, lower triangle, fixed pattern
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  bool analysed = false;
+
+  void kept_transpose_times(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& r, Eigen::VectorXd& out) const {
+    out.resize(nf);
+    for (int f = 0; f < nf; ++f) {
+      const int c = kept[f];
+      double s = 0.0;
+      for (int p = J.outerIndexPtr()[c]; p < J.outerIndexPtr()[c + 1]; ++p) s += J.valuePtr()[p] * r[J.innerIndexPtr()[p]];
+      out[f] = s;
+    }
+  }
+  // y = J_f z, z over kept columns.
+  void kept_times(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& z, Eigen::VectorXd& y) const {
+    y.setZero(m);
+    for (int f = 0; f < nf; ++f) {
+      const int c = kept[f];
+      for (int p = J.outerIndexPtr()[c]; p < J.outerIndexPtr()[c + 1]; ++p) y[J.innerIndexPtr()[p]] += J.valuePtr()[p] * z[f];
+    }
+  }
+  // Minimum-norm z over kept columns with J_f z = r: z = G^-1 J_f^T r plus one refinement.
+  Eigen::VectorXd solve_kept(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& r) const {
+    Eigen::VectorXd rhs, lin;
+    kept_transpose_times(J, r, rhs);
+    Eigen::VectorXd z = llt.solve(rhs);
+    kept_times(J, z, lin);
+    lin = r - lin;
+    kept_transpose_times(J, lin, rhs);
+    z += llt.solve(rhs);
+    return z;
+  }
+};
+
+MinimumNormSolver::MinimumNormSolver(const Eigen::SparseMatrix<double>& J, const std::vector<int>& held,
+                                     FactorOrdering ordering)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  if (!J.isCompressed()) throw std::invalid_argument("MinimumNormSolver: the Jacobian must be compressed");
+  s.m = static_cast<int>(J.rows());
+  s.n = static_cast<int>(J.cols());
+  s.free.assign(s.n, 0);
+  for (int k : held) {
+    if (k < 0 || k >= s.n) throw std::invalid_argument("MinimumNormSolver: held unknown " + std::to_string(k) + " out of range");
+    s.free[k] = -1;
+  }
+  for (int c = 0; c < s.n; ++c)
+    if (s.free[c] >= 0) {
+      s.free[c] = s.nf++;
+      s.kept.push_back(c);
+    }
+  // Row-wise view of the kept entries (J is CSC): per row, (kept column, value position).
+  std::vector<int> row_count(s.m + 1, 0);
+  for (int c = 0; c < s.n; ++c)
+    if (s.free[c] >= 0)
+      for (int p = J.outerIndexPtr()[c]; p < J.outerIndexPtr()[c + 1]; ++p) ++row_count[J.innerIndexPtr()[p] + 1];
+  for (int i = 0; i < s.m; ++i) row_count[i + 1] += row_count[i];
+  s.row_vals_begin = row_count;
+  s.row_vals.resize(row_count[s.m]);
+  std::vector<int> row_cols(row_count[s.m]);
+  {
+    std::vector<int> next(row_count.begin(), row_count.end() - 1);
+    for (int c = 0; c < s.n; ++c)  // columns in increasing order: each row's list is sorted by column
+      if (s.free[c] >= 0)
+        for (int p = J.outerIndexPtr()[c]; p < J.outerIndexPtr()[c + 1]; ++p) {
+          const int i = J.innerIndexPtr()[p];
+          row_cols[next[i]] = s.free[c];
+          s.row_vals[next[i]++] = p;
+        }
+  }
+  auto same_cols = [&](int a, int b) {
+    return std::equal(row_cols.begin() + row_count[a], row_cols.begin() + row_count[a + 1],
+                      row_cols.begin() + row_count[b], row_cols.begin() + row_count[b + 1]);
+  };
+  // Runs of rows with the same columns; the lower-triangle pattern of G, column by column.
+  std::vector<std::vector<int>> g_rows(s.nf);
+  for (int f = 0; f < s.nf; ++f) g_rows[f].push_back(f);  // the diagonal always exists (lambda)
+  for (int i = 0; i < s.m;) {
+    int j = i + 1;
+    while (j < s.m && same_cols(i, j)) ++j;
+    s.run_begin.push_back(i);
+    s.run_cols_begin.push_back(static_cast<int>(s.run_cols.size()));
+    for (int p = row_count[i]; p < row_count[i + 1]; ++p) s.run_cols.push_back(row_cols[p]);
+    for (int a = row_count[i]; a < row_count[i + 1]; ++a)
+      for (int b = row_count[i]; b < a; ++b) g_rows[row_cols[b]].push_back(row_cols[a]);  // row_cols[a] > row_cols[b]
+    i = j;
+  }
+  s.run_begin.push_back(s.m);
+  s.run_cols_begin.push_back(static_cast<int>(s.run_cols.size()));
+  std::vector<int> outer(s.nf + 1, 0), inner;
+  for (int f = 0; f < s.nf; ++f) {
+    std::sort(g_rows[f].begin(), g_rows[f].end());
+    g_rows[f].erase(std::unique(g_rows[f].begin(), g_rows[f].end()), g_rows[f].end());
+    outer[f + 1] = outer[f] + static_cast<int>(g_rows[f].size());
+  }
+  inner.reserve(outer[s.nf]);
+  for (auto& col : g_rows) {
+    inner.insert(inner.end(), col.begin(), col.end());
+    std::vector<int>().swap(col);
+  }
+  s.G.resize(s.nf, s.nf);
+  s.G.resizeNonZeros(outer[s.nf]);
+  std::copy(outer.begin(), outer.end(), s.G.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), s.G.innerIndexPtr());
+  std::fill(s.G.valuePtr(), s.G.valuePtr() + outer[s.nf], 0.0);
+  auto slot = [&](int row, int col) {  // row >= col
+    const int* first = inner.data() + outer[col];
+    const int* last = inner.data() + outer[col + 1];
+    return static_cast<int>(std::lower_bound(first, last, row) - inner.data());
+  };
+  s.diag_slot.resize(s.nf);
+  for (int f = 0; f < s.nf; ++f) s.diag_slot[f] = outer[f];  // rows sorted, diagonal first
+  const int runs = static_cast<int>(s.run_begin.size()) - 1;
+  s.run_pairs_begin.assign(1, 0);
+  for (int g = 0; g < runs; ++g) {
+    const int* cols = s.run_cols.data() + s.run_cols_begin[g];
+    const int d = s.run_cols_begin[g + 1] - s.run_cols_begin[g];
+    for (int a = 0; a < d; ++a)
+      for (int b = 0; b <= a; ++b) s.pair_slot.push_back(slot(cols[a], cols[b]));
+    s.run_pairs_begin.push_back(static_cast<int>(s.pair_slot.size()));
+  }
+  s.llt.cholmod().print = 0;  // a failed (non-positive) pivot is handled here, not printed
+  if (const int ord = cholmod_ordering(ordering); ord >= 0) {
+    s.llt.cholmod().nmethods = 1;
+    s.llt.cholmod().method[0].ordering = ord;
+  }
+}
+
+MinimumNormSolver::~MinimumNormSolver() = default;
+
+bool MinimumNormSolver::factorize(const Eigen::SparseMatrix<double>& J, double lambda_relative) {
+  Impl& s = *impl_;
+  double* gv = s.G.valuePtr();
+  std::fill(gv, gv + s.G.nonZeros(), 0.0);
+  const double* jv = J.valuePtr();
+  double row[64];
+  const int runs = static_cast<int>(s.run_begin.size()) - 1;
+  for (int g = 0; g < runs; ++g) {
+    const int d = s.run_cols_begin[g + 1] - s.run_cols_begin[g];
+    const int* slots = s.pair_slot.data() + s.run_pairs_begin[g];
+    for (int i = s.run_begin[g]; i < s.run_begin[g + 1]; ++i) {
+      const int* pos = s.row_vals.data() + s.row_vals_begin[i];
+      if (d <= 64) {
+        for (int a = 0; a < d; ++a) row[a] = jv[pos[a]];
+        int q = 0;
+        for (int a = 0; a < d; ++a)
+          for (int b = 0; b <= a; ++b) gv[slots[q++]] += row[a] * row[b];
+      } else {
+        int q = 0;
+        for (int a = 0; a < d; ++a)
+          for (int b = 0; b <= a; ++b) gv[slots[q++]] += jv[pos[a]] * jv[pos[b]];
+      }
+    }
+  }
+  double scale = 1.0;
+  for (int slot : s.diag_slot) scale = std::max(scale, gv[slot]);
+  double lambda = lambda_relative * scale;
+  double added = 0.0;
+  if (!s.analysed) {
+    s.llt.analyzePattern(s.G);
+    s.analysed = true;
+    ++symbolic_analyses_;
+  }
+  for (int attempt = 0;; ++attempt) {
+    for (int slot : s.diag_slot) gv[slot] += lambda - added;
+    added = lambda;
+    s.llt.factorize(s.G);
+    ++factorizations_;
+    lambda_ = lambda;
+    if (s.llt.info() == Eigen::Success) return true;
+    if (attempt >= 12) return false;  // lambda grew by 1e24: give up
+    lambda *= 100.0;
+  }
+}
+
+Eigen::VectorXd MinimumNormSolver::solve(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& r) const {
+  const Impl& s = *impl_;
+  const Eigen::VectorXd z = s.solve_kept(J, r);
+  Eigen::VectorXd dx = Eigen::VectorXd::Zero(s.n);
+  for (int f = 0; f < s.nf; ++f) dx[s.kept[f]] = z[f];
+  return dx;
+}
+
+Eigen::VectorXd MinimumNormSolver::null_vector(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& guess) const {
+  const Impl& s = *impl_;
+  Eigen::VectorXd g(s.nf);
+  for (int f = 0; f < s.nf; ++f) g[f] = guess[s.kept[f]];
+  // Two inverse iterations: G^-1 magnifies the null direction by 1/lambda against
+  // 1/sigma^2 for the others, so the second iterate is the null vector to round-off.
+  Eigen::VectorXd w = s.llt.solve(g);
+  w /= w.norm();
+  w = s.llt.solve(w);
+  w /= w.norm();
+  // Remove what is left of J_f w with a minimum-norm correction.
+  Eigen::VectorXd Jw;
+  s.kept_times(J, w, Jw);
+  w -= s.solve_kept(J, Jw);
+  w /= w.norm();
+  if (w.dot(g) < 0) w = -w;
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(s.n);
+  for (int f = 0; f < s.nf; ++f) out[s.kept[f]] = w[f];
+  return out;
+}
 
 NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& x0, const NewtonOptions& options) {
   const int n = system.num_unknowns();
@@ -27,12 +251,8 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
   if (x0.size() != n)
     throw std::invalid_argument("newton_project: x0 has " + std::to_string(x0.size()) + " entries, expected " +
                                 std::to_string(n));
-  // Column selector: held unknowns get a zero column in J_f = J * S.
-  Eigen::VectorXd keep = Eigen::VectorXd::Ones(n);
-  for (int k : options.held_unknowns) {
+  for (int k : options.held_unknowns)
     if (k < 0 || k >= n) throw std::invalid_argument("newton_project: held unknown " + std::to_string(k) + " out of range");
-    keep[k] = 0.0;
-  }
 
   NewtonResult result;
   result.x = x0;
@@ -46,41 +266,18 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
     return result;
   }
 
-  Eigen::SparseMatrix<double> identity(m, m);
-  identity.setIdentity();
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
-  llt.cholmod().print = 0;  // a failed (non-positive) pivot is handled here, not printed
-  std::vector<int> outer, inner;
-
+  std::unique_ptr<MinimumNormSolver> solver;
+  auto record = [&] {
+    result.factorizations = solver->factorizations();
+    result.symbolic_analyses = solver->symbolic_analyses();
+    result.lambda = solver->lambda();
+  };
   while (rnorm > options.tolerance && result.iterations < options.max_iterations) {
-    const Eigen::SparseMatrix<double> Jf = J * keep.asDiagonal();
-    const Eigen::SparseMatrix<double> JJt = Jf * Jf.transpose();
-    const double scale = std::max(1.0, JJt.diagonal().maxCoeff());
-    double lambda = options.lambda_relative * scale;
-    Eigen::SparseMatrix<double> A;
-    for (int attempt = 0;; ++attempt) {
-      A = JJt + lambda * identity;
-      if (!same_pattern(A, outer, inner)) {
-        llt.analyzePattern(A);
-        ++result.symbolic_analyses;
-        outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-        inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-      }
-      llt.factorize(A);
-      ++result.factorizations;
-      if (llt.info() == Eigen::Success) break;
-      if (attempt >= 12) {  // lambda grew by 1e24: give up, report what we have
-        result.lambda = lambda;
-        return result;
-      }
-      lambda *= 100.0;
-    }
-    result.lambda = lambda;
-    Eigen::VectorXd dx = Jf.transpose() * llt.solve(r);
-    // One refinement on the linear residual: the lambda-biased step becomes (nearly) the
-    // minimum-norm solution, and the left-null part of r stays out of the step.
-    const Eigen::VectorXd lin = r - Jf * dx;
-    dx += Jf.transpose() * llt.solve(lin);
+    if (!solver) solver = std::make_unique<MinimumNormSolver>(J, options.held_unknowns, options.ordering);
+    const bool ok = solver->factorize(J, options.lambda_relative);
+    record();
+    if (!ok) return result;
+    Eigen::VectorXd dx = solver->solve(J, r);
     const double step = dx.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(step)) return result;
     if (step > options.max_step) dx *= options.max_step / step;

@@ -2,26 +2,39 @@
 // Newton projection onto the constraint manifold r(x) = 0 of a ClosureSystem: minimum-norm
 // Gauss-Newton steps on a redundant, rank-deficient system (DESIGN.md, "Corrector").
 //
-// Each step solves, with A = J_f J_f^T + lambda I (J_f: J with the held columns removed),
-//       y = A^{-1} r,   dx = J_f^T y   (one extra refinement solve on the linear residual
-//                                       r - J_f dx removes most of the lambda bias),
-//       x <- x - dx.
+// Each step takes the minimum-norm Gauss-Newton step of J_f dx = r (J_f: J with the held
+// columns removed), computed from the column-side normal equations
+//       G = J_f^T J_f + lambda I,   dx = G^{-1} J_f^T r
+// (one extra refinement solve on the linear residual r - J_f dx removes most of the lambda
+// bias), then x <- x - dx. By the identity (J^T J + lambda I)^{-1} J^T = J^T (J J^T + lambda I)^{-1}
+// this is the same step as the row-side form J_f^T (J_f J_f^T + lambda I)^{-1} r; the column
+// side is smaller for loop-closure systems (a quad mesh has 3 rows per vertex but about 2
+// creases per vertex, and G couples only creases that share a vertex), so its Cholesky factor
+// has about 4x fewer entries and 10x fewer flops on a Miura-ori.
 // For lambda -> 0 dx is the minimum-norm solution of J_f dx = r, so the iteration moves
 // x the least distance that closes the loops to first order, and it converges
 // quadratically at regular points of the manifold.
-// A is factorised with CHOLMOD (supernodal LLT). Its sparsity pattern does not change
-// between steps, so the symbolic analysis is done once and each step only refactorises.
-// J J^T is singular whenever rows are redundant (always, for a quad mesh), hence lambda > 0:
-// lambda = lambda_relative * max diag(J J^T), multiplied by 100 and retried if the numeric
-// factorisation still meets a non-positive pivot.
+// G is factorised with CHOLMOD (supernodal LLT). Its sparsity pattern does not change
+// between steps, so the symbolic analysis is done once; each step assembles G's values into
+// that fixed pattern (O(sum over rows of nnz(row)^2)) and only refactorises.
+// G is singular whenever the system has DOF (it always has, for a foldable pattern), hence
+// lambda > 0: lambda = lambda_relative * max diag(G), multiplied by 100 and retried if the
+// numeric factorisation still meets a non-positive pivot.
 //
 // Units: x and residuals in radians. Tolerance on ||r||_inf.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 #include "kernel/closure/closure_system.hpp"
 
 namespace rigidfold {
+
+// Fill-reducing ordering for CHOLMOD. kDefault is CHOLMOD's own choice (AMD, and METIS too
+// when AMD's fill is large; the smaller factor wins). kNestedDissection is CHOLMOD's NESDIS
+// (METIS-based nested dissection), asymptotically best for 2D meshes.
+enum class FactorOrdering { kDefault, kAmd, kMetis, kNestedDissection };
 
 struct NewtonOptions {
   double tolerance = 1e-12;         // stop when ||r||_inf <= tolerance (radians)
@@ -29,6 +42,7 @@ struct NewtonOptions {
   double lambda_relative = 1e-14;   // regularisation, relative to max diag(J J^T)
   double max_step = 0.5;            // ||dx||_inf cap per step (radians); steps are scaled down to it
   std::vector<int> held_unknowns;   // indices of unknowns kept at their starting value
+  FactorOrdering ordering = FactorOrdering::kDefault;
 };
 
 struct NewtonResult {
@@ -39,6 +53,43 @@ struct NewtonResult {
   int factorizations = 0;                // numeric factorisations (>= iterations; retries count)
   int symbolic_analyses = 0;             // 1 unless the pattern changed (it does not for a ClosureSystem)
   double lambda = 0.0;                   // regularisation used in the last step
+};
+
+// The linear algebra of the corrector, reusable across Newton steps and continuation
+// steps on one ClosureSystem: G = J_f^T J_f + lambda I assembled into a fixed pattern and
+// factorised by CHOLMOD, the symbolic analysis done once.
+// Inputs: a Jacobian J (m x n, compressed) whose sparsity pattern stays the one given to
+// the constructor (ClosureSystem::evaluate guarantees it); held: unknowns whose columns
+// are dropped (their step is 0).
+class MinimumNormSolver {
+ public:
+  MinimumNormSolver(const Eigen::SparseMatrix<double>& jacobian_pattern, const std::vector<int>& held = {},
+                    FactorOrdering ordering = FactorOrdering::kDefault);
+  ~MinimumNormSolver();
+  MinimumNormSolver(const MinimumNormSolver&) = delete;
+  MinimumNormSolver& operator=(const MinimumNormSolver&) = delete;
+
+  // Assembles and factorises G for J. Returns false if every lambda up to 1e24 times the
+  // first one met a non-positive pivot.
+  bool factorize(const Eigen::SparseMatrix<double>& J, double lambda_relative);
+  // Minimum-norm dx (size n, 0 at held unknowns) with J_f dx = r, one refinement. Needs a
+  // successful factorize(J).
+  Eigen::VectorXd solve(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& r) const;
+  // Unit null vector of J_f by inverse iteration on G from `guess` (which must not be
+  // orthogonal to the null space), refined so that ||J_f w|| is at round-off. Its sign
+  // follows guess. Needs a successful factorize(J).
+  Eigen::VectorXd null_vector(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& guess) const;
+
+  double lambda() const { return lambda_; }
+  int factorizations() const { return factorizations_; }
+  int symbolic_analyses() const { return symbolic_analyses_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  double lambda_ = 0.0;
+  int factorizations_ = 0;
+  int symbolic_analyses_ = 0;
 };
 
 // Projects x0 (size system.num_unknowns(), radians) onto r(x) = 0.

@@ -1,11 +1,16 @@
-// `rigidfold vertex s4r`: JSON shape, full-precision numbers, branches that close the loop,
-// and exit 2 on bad flags.
+// `rigidfold vertex s4r` and `rigidfold vertex miura`: JSON shape, full-precision numbers,
+// values against the library, and exit 2 on bad flags.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 #include "tests/support/run_command.hpp"
 
@@ -52,6 +57,58 @@ TEST(VertexCli, S4RBadFlagsExitTwo) {
   EXPECT_EQ(test::run_command(test::cli() + " vertex s4r --twists 60,120,120,60 --input 400").status, 2);
   EXPECT_EQ(test::run_command(test::cli() + " vertex s4r --twists 60,a,120,60 --input 4").status, 2);
   EXPECT_EQ(test::run_command(test::cli() + " vertex s4r --twists 60,120,120,60").status, 2);
+}
+
+TEST(VertexCli, MiuraJsonMatchesTheLibrary) {
+  for (const char* theta : {"40", "-12.5", "1e-7"}) {
+    const auto r = test::run_command(test::cli() + " vertex miura --alpha1 30 --alpha2 60 --theta " + theta + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double k = std::numbers::pi / 180;
+    const MiuraVertexState st = miura_vertex(30 * k, 60 * k, std::stod(theta) * k);
+    // Full-precision output: the parsed degrees are the library's values times 180/pi.
+    EXPECT_DOUBLE_EQ(j["phi_deg"].get<double>(), st.phi / k);
+    EXPECT_DOUBLE_EQ(j["psi_deg"].get<double>(), st.psi / k);
+    EXPECT_DOUBLE_EQ(j["theta_limit_deg"].get<double>(), miura_theta_limit(30 * k, 60 * k) / k);
+    ASSERT_EQ(j["fold_angles_deg"].size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(j["fold_angles_deg"][i]["crease"].get<std::string>(), std::string(kMiuraCreaseNames[i]));
+      EXPECT_DOUBLE_EQ(j["fold_angles_deg"][i]["fold_angle_deg"].get<double>(), st.fold_angles[i] / k);
+    }
+    EXPECT_LT(j["closure_residual_rad"].get<double>(), 1e-12);
+  }
+  // Eq. (40) at 30/60 deg: 90 - acos(1/3)/2 = 54.7356... deg; the printed limit is accepted.
+  const auto lim = nlohmann::json::parse(test::run_command(test::cli() + " vertex miura --alpha1 60 --alpha2 30 --theta 0 --json").out);
+  EXPECT_NEAR(lim["theta_limit_deg"].get<double>(), 54.735610317245346, 1e-12);
+  char flag[64];
+  std::snprintf(flag, sizeof flag, "%.17g", lim["theta_limit_deg"].get<double>());
+  EXPECT_EQ(test::run_command(test::cli() + " vertex miura --alpha1 60 --alpha2 30 --theta " + flag).status, 0);
+}
+
+TEST(VertexCli, MiuraTextOutput) {
+  const auto r = test::run_command(test::cli() + " vertex miura --alpha1 45 --alpha2 45 --theta 30");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("phi = "), std::string::npos);
+  EXPECT_NE(r.out.find("psi = 0 deg"), std::string::npos);  // symmetric vertex: exactly 0
+  for (auto name : kMiuraCreaseNames) EXPECT_NE(r.out.find(std::string(name)), std::string::npos);
+}
+
+TEST(VertexCli, MiuraBadFlagsExitTwoNamingTheFlag) {
+  const std::string base = test::cli() + " vertex miura ";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--alpha1 0 --alpha2 40 --theta 10", "--alpha1"},     {"--alpha1 90 --alpha2 40 --theta 10", "--alpha1"},
+      {"--alpha1 30 --alpha2 -5 --theta 10", "--alpha2"},    {"--alpha1 nan --alpha2 40 --theta 10", "--alpha1"},
+      {"--alpha1 30 --alpha2 60 --theta 55", "--theta"},     {"--alpha1 30 --alpha2 60 --theta -55", "--theta"},
+      {"--alpha1 30 --alpha2 60 --theta inf", "--theta"},    {"--alpha1 30 --alpha2 60 --theta abc", "--theta"},
+      {"--alpha1 30 --alpha2 60", "--theta"},
+  };
+  for (const auto& [args, flag] : cases) {
+    const auto r = test::run_command(base + args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_TRUE(r.out.empty()) << args;
+    EXPECT_NE(r.err.find(flag), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,310 @@
+// Large-tessellation scaling benchmarks (issue 5). Every run reports the error it reached
+// next to its time, plus the pattern size and the process's peak resident memory:
+//   edges               creases of the pattern (all edges, boundary included)
+//   residual            ||r||_inf reached (radians)
+//   error_vs_closed_form max |rho - rho_closed_form| over the unknowns (radians)
+//   peak_rss_mb         getrusage peak RSS of the process so far (run one benchmark per
+//                       process for a per-benchmark figure: scripts/bench_report.sh does)
+// Sizes: Miura-ori n x n cells, about 2 n^2 creases. The default set stays small (a quick
+// run finishes in a few minutes); RIGIDFOLD_BENCH_LARGE=1 adds n up to 1000 (2 million
+// creases; needs minutes per benchmark and several GiB).
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "data/generators/graded_miura.hpp"
+#include "data/generators/miura.hpp"
+#include "data/generators/waterbomb_tessellation.hpp"
+#include "kernel/analysis/multiplier_propagation.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/geometry/fold_angles.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/solve/continuation.hpp"
+#include "kernel/solve/newton_projection.hpp"
+#include "kernel/solve/rank.hpp"
+
+namespace rigidfold {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // kilobytes on Linux
+}
+
+// One Miura-ori instance with its closed-form state at rho_s = 1.2 and a perturbed start.
+struct MiuraCase {
+  generators::MiuraParams params;
+  CreasePattern pattern;
+  Topology topology;
+  ClosureSystem system;
+  Eigen::VectorXd exact, start;
+  explicit MiuraCase(int n)
+      : params(make_params(n)),
+        pattern(generators::miura_ori(params)),
+        topology(build_topology(pattern)),
+        system(pattern, topology),
+        exact(closed_form(1.2)) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
+    start = exact;
+    for (int k = 1; k < start.size(); ++k) start[k] += noise(rng);  // unknown 0 is held
+  }
+  static generators::MiuraParams make_params(int n) {
+    generators::MiuraParams m;
+    m.rows = m.cols = n;
+    m.alpha = kPi / 3;
+    return m;
+  }
+  Eigen::VectorXd closed_form(double rho_s) const {
+    return system.unknowns_from_edges(fold_angle_vector(generators::miura_fold_angles(pattern, params, rho_s)));
+  }
+  // Unknown of a straight crease (the trace's driver): edge (0, 1).
+  int driver() const { return system.unknown_of_edge(params.cols + 0); }
+};
+
+void finish(benchmark::State& state, const CreasePattern& p) {
+  state.counters["edges"] = p.num_edges();
+  state.counters["peak_rss_mb"] = peak_rss_mb();
+}
+
+void BM_Residual(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  Eigen::VectorXd r;
+  for (auto _ : state) {
+    r = c.system.residual(c.exact);
+    benchmark::DoNotOptimize(r.data());
+  }
+  state.counters["residual"] = r.lpNorm<Eigen::Infinity>();
+  finish(state, c.pattern);
+}
+
+void BM_Jacobian(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  for (auto _ : state) c.system.evaluate(c.exact, r, J);
+  state.counters["residual"] = r.lpNorm<Eigen::Infinity>();
+  state.counters["nnz"] = static_cast<double>(J.nonZeros());
+  finish(state, c.pattern);
+}
+
+// Numeric factorisation of G = J^T J + lambda I (symbolic analysis outside the loop);
+// range(1) = FactorOrdering. Error: ||J_f dx - r||_inf of the minimum-norm step.
+void BM_Factorize(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  const auto ordering = static_cast<FactorOrdering>(state.range(1));
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  c.system.evaluate(c.start, r, J);
+  MinimumNormSolver solver(J, {0}, ordering);
+  solver.factorize(J, 1e-14);
+  for (auto _ : state) solver.factorize(J, 1e-14);
+  const Eigen::VectorXd dx = solver.solve(J, r);
+  state.counters["linear_residual"] = (J * dx - r).lpNorm<Eigen::Infinity>();
+  state.counters["ordering"] = static_cast<double>(state.range(1));
+  finish(state, c.pattern);
+}
+
+// One corrector (Newton projection) from the closed form + 1e-4 noise, one crease held, to
+// tolerance 10^-range(2); range(1) = FactorOrdering.
+void BM_Corrector(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  NewtonOptions o;
+  o.held_unknowns = {0};
+  o.ordering = static_cast<FactorOrdering>(state.range(1));
+  o.tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
+  NewtonResult res;
+  for (auto _ : state) res = newton_project(c.system, c.start, o);
+  state.counters["iterations"] = res.iterations;
+  state.counters["residual"] = res.residual_history.back();
+  state.counters["error_vs_closed_form"] = (res.x - c.exact).cwiseAbs().maxCoeff();
+  state.counters["ordering"] = static_cast<double>(state.range(1));
+  state.counters["tolerance"] = o.tolerance;
+  finish(state, c.pattern);
+}
+
+// One continuation step (predictor + corrector + tangent) from the closed form.
+void BM_ContinuationStep(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  ContinuationOptions o;
+  o.max_points = 2;
+  o.initial_step = 0.02 * std::sqrt(static_cast<double>(c.system.num_unknowns()));
+  o.max_step = o.initial_step;
+  ContinuationResult res;
+  const Eigen::VectorXd dir = c.closed_form(1.3) - c.exact;
+  for (auto _ : state) res = continue_one_dof(c.system, c.exact, dir, [](const Eigen::VectorXd&) { return false; }, o);
+  const ContinuationPoint& last = res.points.back();
+  const double rho_s = std::fabs(last.x[c.driver()]);
+  state.counters["points"] = static_cast<double>(res.points.size());
+  state.counters["residual"] = last.residual;
+  state.counters["error_vs_closed_form"] = (last.x - c.closed_form(rho_s)).cwiseAbs().maxCoeff();
+  finish(state, c.pattern);
+}
+
+// A full trace: from rho_s = 5 deg (the flat state itself is a singular point) to 170 deg in about 100 equal arclength steps. Error:
+// the worst distance of any traced point from the closed form at its own rho_s.
+void BM_Trace(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  const double start_fold = 5 * kPi / 180, end_fold = 170 * kPi / 180;
+  const Eigen::VectorXd x0 = c.closed_form(start_fold);
+  ContinuationOptions o;
+  o.initial_step = o.max_step = (c.closed_form(end_fold) - x0).norm() / 100;
+  const int driver = c.driver();
+  ContinuationResult res;
+  for (auto _ : state)
+    res = continue_one_dof(c.system, x0, c.closed_form(2 * start_fold) - x0,
+                           [&](const Eigen::VectorXd& x) { return std::fabs(x[driver]) >= end_fold; }, o);
+  double worst_residual = 0, worst_error = 0;
+  for (const ContinuationPoint& pt : res.points) {
+    worst_residual = std::max(worst_residual, pt.residual);
+    worst_error = std::max(worst_error, (pt.x - c.closed_form(std::fabs(pt.x[driver]))).cwiseAbs().maxCoeff());
+  }
+  state.counters["points"] = static_cast<double>(res.points.size());
+  state.counters["reached_deg"] = std::fabs(res.points.back().x[driver]) * 180 / kPi;
+  state.counters["residual"] = worst_residual;
+  state.counters["error_vs_closed_form"] = worst_error;
+  finish(state, c.pattern);
+}
+
+// DOF / rank of the Jacobian at a folded state (dense SVD up to 2000 unknowns, SPQR above).
+void BM_Rank(benchmark::State& state) {
+  const MiuraCase c(static_cast<int>(state.range(0)));
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  c.system.evaluate(c.exact, r, J);
+  RankResult rk;
+  for (auto _ : state) rk = jacobian_rank(J);
+  state.counters["dof"] = rk.dof;
+  state.counters["sigma_dropped"] = rk.sigma_dropped;
+  state.counters["residual"] = r.lpNorm<Eigen::Infinity>();
+  state.SetLabel(rk.method);
+  finish(state, c.pattern);
+}
+
+// Multiplier propagation (exact verdict with certificate) against the general corrector on
+// the same graded (non-Miura) quad mesh: n x n panels.
+generators::GradedMiuraParams graded(int n) {
+  generators::GradedMiuraParams g;
+  g.rows = g.cols = n;
+  g.theta_min = 0.9;
+  g.theta_max = 1.1;
+  return g;
+}
+
+void BM_GradedMultiplier(benchmark::State& state) {
+  const CreasePattern p = generators::graded_miura(graded(static_cast<int>(state.range(0))));
+  const Topology t = build_topology(p);
+  FoldabilityVerdict v;
+  for (auto _ : state) v = verdict_with_assignment(p, t);
+  state.counters["dof"] = v.dof;
+  state.counters["max_defect"] = v.max_loop_defect;
+  state.counters["mismatch"] = v.certificate_mismatch;
+  finish(state, p);
+}
+
+void BM_GradedCorrector(benchmark::State& state) {
+  const auto gp = graded(static_cast<int>(state.range(0)));
+  const CreasePattern p = generators::graded_miura(gp);
+  const ClosureSystem sys(p, build_topology(p));
+  const Eigen::VectorXd exact = sys.unknowns_from_edges(fold_angle_vector(generators::graded_miura_fold_angles(gp, 1.2)));
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
+  Eigen::VectorXd x0 = exact;
+  for (int k = 1; k < x0.size(); ++k) x0[k] += noise(rng);
+  NewtonOptions o;
+  o.held_unknowns = {0};
+  NewtonResult res;
+  for (auto _ : state) res = newton_project(sys, x0, o);
+  state.counters["residual"] = res.residual_history.back();
+  state.counters["error_vs_closed_form"] = (res.x - exact).cwiseAbs().maxCoeff();
+  finish(state, p);
+}
+
+// Multi-DOF: the waterbomb tessellation, a random small fold projected onto the manifold.
+void BM_WaterbombCorrector(benchmark::State& state) {
+  generators::WaterbombTessellationParams wp;
+  wp.rows = wp.cols = static_cast<int>(state.range(0));
+  const CreasePattern p = generators::waterbomb_tessellation(wp);
+  const ClosureSystem sys(p, build_topology(p));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  Eigen::VectorXd x0(sys.num_unknowns());
+  for (int k = 0; k < x0.size(); ++k) x0[k] = u(rng);
+  NewtonResult res;
+  for (auto _ : state) res = newton_project(sys, x0);
+  state.counters["residual"] = res.residual_history.back();
+  state.counters["iterations"] = res.iterations;
+  finish(state, p);
+}
+
+// Not foldable: perturbed Miura; the corrector from the Miura's folded state. It either
+// fails or lands on a nearly flat state; "residual" and "max_fold" show which.
+void BM_PerturbedCorrector(benchmark::State& state) {
+  generators::MiuraParams mp = MiuraCase::make_params(static_cast<int>(state.range(0)));
+  generators::MiuraParams exact = mp;
+  mp.perturbation = 0.05;
+  const CreasePattern p = generators::miura_ori(mp);
+  const ClosureSystem sys(p, build_topology(p));
+  const Eigen::VectorXd x0 =
+      sys.unknowns_from_edges(fold_angle_vector(generators::miura_fold_angles(generators::miura_ori(exact), exact, 0.5)));
+  NewtonResult res;
+  for (auto _ : state) res = newton_project(sys, x0);
+  state.counters["residual"] = res.residual_history.back();
+  state.counters["max_fold"] = res.x.cwiseAbs().maxCoeff();
+  state.counters["converged"] = res.converged;
+  finish(state, p);
+}
+
+void register_all() {
+  const bool large = std::getenv("RIGIDFOLD_BENCH_LARGE") != nullptr;
+  std::vector<int> sizes = {10, 30, 100, 200};
+  std::vector<int> big = {400, 700, 1000};
+  if (large) sizes.insert(sizes.end(), big.begin(), big.end());
+  auto add = [](const char* name, void (*fn)(benchmark::State&)) {
+    return benchmark::RegisterBenchmark(name, fn)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+  };
+  for (int n : sizes) {
+    add("BM_Residual", BM_Residual)->Arg(n);
+    add("BM_Jacobian", BM_Jacobian)->Arg(n);
+    add("BM_Factorize", BM_Factorize)->Args({n, 0});
+    add("BM_Corrector", BM_Corrector)->Args({n, 0, 12});
+    add("BM_ContinuationStep", BM_ContinuationStep)->Arg(n);
+    add("BM_GradedMultiplier", BM_GradedMultiplier)->Arg(n);
+    add("BM_GradedCorrector", BM_GradedCorrector)->Arg(n);
+  }
+  // Solver settings (time against error) on one mid size: orderings and tolerances.
+  const int mid = large ? 400 : 100;
+  for (int ord = 1; ord <= 3; ++ord) {
+    add("BM_Factorize", BM_Factorize)->Args({mid, ord});
+    add("BM_Corrector", BM_Corrector)->Args({mid, ord, 12});
+  }
+  for (int tol : {6, 8, 10}) add("BM_Corrector", BM_Corrector)->Args({mid, 0, tol});
+  for (int n : {10, 30, 100}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
+  if (large)
+    for (int n : {200, 400}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
+  for (int n : {10, 20, 40}) add("BM_Rank", BM_Rank)->Arg(n);
+  if (large) add("BM_Rank", BM_Rank)->Arg(100);
+  for (int n : {5, 10, 20}) add("BM_WaterbombCorrector", BM_WaterbombCorrector)->Arg(n);
+  for (int n : {10, 30, 100}) add("BM_PerturbedCorrector", BM_PerturbedCorrector)->Arg(n);
+}
+
+}  // namespace
+}  // namespace rigidfold
+
+int main(int argc, char** argv) {
+  rigidfold::register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,103 @@
+#pragma once
+// Every folding branch of a 1-DOF-per-branch pattern, from the flat state through its
+// bifurcations (DESIGN.md, "Bifurcation"; issue 3 step 4).
+//
+// Method (points and branches form a graph):
+//   1. The flat state x = 0 is the first point. Its tangent cone (tangent_cone.hpp: kernel
+//      of J filtered by the second-order conditions) gives the tangent lines; each line is
+//      left on both sides (leave_singular_point) and traced by 1-DOF pseudo-arclength
+//      continuation (continue_one_dof).
+//   2. Along a branch, at every accepted point, the bordered determinant
+//      det[U_prev^T J(x); t^T] is compared with the previous point's; a sign change is a
+//      bifurcation, located to `locate_tolerance` in the path parameter
+//      (locate_singular_point) and added as a point (or matched with a known one). Its
+//      tangent cone gives new departures: every line, both sides, except directions already
+//      used by a branch at that point (the way we came in, and branches traced before).
+//   3. A branch stops at: a bifurcation ("bifurcation"); a crease reaching +-fold_limit
+//      ("fold limit": local facet interference if the others are not at 0 or +-pi, the
+//      fully folded state if they all are). The exact point where that crease is at +-pi is
+//      then solved for (Newton with it held) and added as a point of kind "interference" or
+//      "fully folded"; departures are taken from a fully folded point too, but only those
+//      that fold back (no crease beyond pi). Other stops: "reached a known point",
+//      "step too small", "not 1 DOF", "max points".
+//   4. Along each branch: sign switches of creases relative to the branch's first point,
+//      with the branch's driving crease value at the crossing; whether the pattern's M/V
+//      letters hold over the whole branch (zero counts as either sign).
+// The exploration is breadth-first and bounded (max_branches).
+//
+// Units: radians inside; per-edge fold angles with the FOLD sign (valley > 0).
+// Limits: dense linear algebra at every point (SVD of J): meant for patterns up to
+//   max_unknowns free creases (a few hundred); multi-DOF branches are reported, not traced;
+//   sheets with holes are rejected (ClosureSystem throws).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "kernel/analysis/general_verdict.hpp"  // SignSwitch
+#include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/solve/continuation.hpp"
+#include "kernel/solve/tangent_cone.hpp"
+
+namespace rigidfold {
+
+struct BranchExplorerOptions {
+  double departure_step = 2e-3;       // distance from a point to the first branch point (radians)
+  double fold_limit = 3.1405926535897932;  // pi - 1e-3
+  double zero_tolerance = 1e-10;      // |rho| at most this counts as flat (no sign)
+  double locate_tolerance = 1e-10;    // bracket on the path parameter of a bifurcation (radians)
+  double same_point = 1e-6;           // |x - y|_inf below this: the same point
+  double same_direction = 0.995;      // cosine above this: the same departure direction
+  int max_branches = 64;
+  int max_points_per_branch = 3000;
+  int max_unknowns = 400;             // larger patterns: not applicable (dense SVDs)
+  ContinuationOptions continuation;
+  TangentConeOptions cone;
+};
+
+struct BranchPoint {
+  std::string kind;                   // "flat", "bifurcation", "fully folded", "interference"
+  Eigen::VectorXd angles;             // per-edge fold angles (radians)
+  int parameter_edge = -1;            // the edge whose fold angle is reported as the path parameter:
+                                      // the arriving branch's driving crease, or the crease held at +-pi
+  double parameter = 0.0;             // its fold angle there (radians)
+  double parameter_uncertainty = 0.0; // bifurcation: location accuracy along the path (radians of
+                                      // pseudo-arclength, which bounds the change of any fold angle)
+  double residual = 0.0;              // ||r||_inf there
+  double sigma_second_smallest = 0.0; // independent check of a bifurcation: ~0 (kernel dimension >= 2)
+  double sigma_max = 0.0;
+  int kernel_dimension = 0;           // first-order DOF there
+  int tangent_lines = 0;              // second-order cone lines there
+  int stop_crease = -1;               // "interference" / "fully folded": the crease held at +-pi
+};
+
+struct BranchTrace {
+  int id = 0;
+  int from_point = -1, to_point = -1; // indices into BranchExploration::points (-1: open end)
+  int driving_edge = -1;              // the edge that moves most at departure
+  std::vector<Eigen::VectorXd> path;  // per-edge fold angles at every accepted point (radians)
+  std::vector<double> residuals;      // ||r||_inf at every point
+  double max_residual = 0.0;
+  double max_fold = 0.0;              // max |rho| over the path
+  double driving_begin = 0.0, driving_end = 0.0;  // driving edge's angle at the ends (radians)
+  bool signs_match_assignment = true; // every M/V crease agrees with its letter (or is 0) all along
+  int first_wrong_crease = -1;
+  std::string stopped_by;
+  int stop_crease = -1;
+  std::vector<SignSwitch> sign_switches;
+};
+
+struct BranchExploration {
+  bool applicable = false;
+  std::string why_not;                // when not applicable
+  int num_unknowns = 0;
+  std::vector<BranchPoint> points;    // points[0] is the flat state
+  std::vector<BranchTrace> branches;
+  double seconds = 0.0;
+};
+
+// Inputs: a validated flat pattern and its topology.
+BranchExploration explore_branches(const CreasePattern& pattern, const Topology& topology,
+                                   const BranchExplorerOptions& options = {});
+
+}  // namespace rigidfold

@@ -1,0 +1,144 @@
+#include "kernel/solve/tangent_cone.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/closure/closure_second_order.hpp"
+
+namespace rigidfold {
+namespace {
+
+// splitmix64 + Box-Muller: the same starts on every platform.
+struct Starts {
+  std::uint64_t s;
+  double uniform() {
+    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return (static_cast<double>(z >> 11) + 0.5) * 0x1.0p-53;
+  }
+  Eigen::VectorXd unit(int k) {
+    Eigen::VectorXd c(k);
+    for (int i = 0; i < k; ++i) c[i] = std::sqrt(-2 * std::log(uniform())) * std::cos(6.283185307179586 * uniform());
+    return c.normalized();
+  }
+};
+
+Eigen::VectorXd quadratics(const std::vector<Eigen::MatrixXd>& H, const Eigen::VectorXd& c) {
+  Eigen::VectorXd q(H.size());
+  for (std::size_t j = 0; j < H.size(); ++j) q[static_cast<int>(j)] = c.dot(H[j] * c);
+  return q;
+}
+
+// Rank of the quadratics' gradients projected on the sphere's tangent space at c.
+int tangent_rank(const std::vector<Eigen::MatrixXd>& H, const Eigen::VectorXd& c, double tol) {
+  const int k = static_cast<int>(c.size());
+  if (k <= 1) return 0;
+  Eigen::MatrixXd G(H.size(), k);
+  for (std::size_t j = 0; j < H.size(); ++j) G.row(static_cast<int>(j)) = 2.0 * (H[j] * c).transpose();
+  const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(k, k) - c * c.transpose();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(G * P);
+  const auto& s = svd.singularValues();
+  int r = 0;
+  for (int i = 0; i < s.size(); ++i) r += s[i] > tol;
+  return r;
+}
+
+}  // namespace
+
+TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, const Eigen::VectorXd& x,
+                         const TangentConeOptions& options) {
+  TangentCone cone;
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> Js;
+  system.evaluate(x, r, Js);
+  const Eigen::MatrixXd J(Js);
+  const int m = static_cast<int>(J.rows()), n = static_cast<int>(J.cols());
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  cone.sigma_max = sv.size() ? sv[0] : 0.0;
+  const double cut = options.rank_tolerance * std::max(cone.sigma_max, 1e-300);
+  int rank = 0;
+  while (rank < sv.size() && sv[rank] > cut) ++rank;
+  cone.sigma_smallest_kept = rank > 0 ? sv[rank - 1] : 0.0;
+  cone.sigma_largest_dropped = rank < sv.size() ? sv[rank] : 0.0;
+  const int k = n - rank, p = m - rank;
+  cone.kernel_dimension = k;
+  cone.left_null_dimension = p;
+  cone.kernel = svd.matrixV().rightCols(k);
+  if (k == 0) return cone;
+  const Eigen::MatrixXd U = svd.matrixU().rightCols(p);
+
+  // H_j by polarisation of the exact quadratic q(c) = U^T D^2 r[N c, N c].
+  auto q_of = [&](const Eigen::VectorXd& c) -> Eigen::VectorXd {
+    return U.transpose() * closure_second_derivative(system, topology, x, cone.kernel * c);
+  };
+  std::vector<Eigen::MatrixXd> H(p, Eigen::MatrixXd::Zero(k, k));
+  for (int a = 0; a < k; ++a) {
+    const Eigen::VectorXd qa = q_of(Eigen::VectorXd::Unit(k, a));
+    for (int j = 0; j < p; ++j) H[j](a, a) = qa[j];
+    for (int b = a + 1; b < k; ++b) {
+      const Eigen::VectorXd ep = Eigen::VectorXd::Unit(k, a) + Eigen::VectorXd::Unit(k, b);
+      const Eigen::VectorXd em = Eigen::VectorXd::Unit(k, a) - Eigen::VectorXd::Unit(k, b);
+      const Eigen::VectorXd qab = 0.25 * (q_of(ep) - q_of(em));
+      for (int j = 0; j < p; ++j) H[j](a, b) = H[j](b, a) = qab[j];
+    }
+  }
+  // Scale: D^2 r is O(|J|) for unit directions (the vertex rows are products of rotations).
+  const double scale = std::max(1.0, cone.sigma_max);
+  double hmax = 0.0;
+  for (const auto& h : H) hmax = std::max(hmax, h.cwiseAbs().maxCoeff());
+  if (hmax <= options.quadratic_tolerance * scale) {
+    cone.quadratics_vanish = true;
+    return cone;
+  }
+  const double accept = options.quadratic_tolerance * scale;
+
+  Starts gen{options.seed};
+  std::vector<Eigen::VectorXd> found;
+  for (int s = 0; s < options.starts && static_cast<int>(found.size()) < options.max_lines; ++s) {
+    Eigen::VectorXd c = k == 1 ? Eigen::VectorXd::Ones(1) : gen.unit(k);
+    bool ok = false;
+    for (int it = 0; it < 60; ++it) {
+      const Eigen::VectorXd q = quadratics(H, c);
+      if (q.lpNorm<Eigen::Infinity>() <= 1e-3 * accept) {
+        ok = true;
+        break;
+      }
+      // Minimum-norm Gauss-Newton step on [q(c); |c|^2 - 1] = 0.
+      Eigen::MatrixXd A(p + 1, k);
+      Eigen::VectorXd b(p + 1);
+      for (int j = 0; j < p; ++j) A.row(j) = 2.0 * (H[j] * c).transpose();
+      A.row(p) = 2.0 * c.transpose();
+      b.head(p) = q;
+      b[p] = c.squaredNorm() - 1.0;
+      const Eigen::VectorXd dc = A.completeOrthogonalDecomposition().solve(b);
+      c -= dc;
+      c.normalize();
+      if (dc.norm() < 1e-15) break;
+    }
+    if (!ok) ok = quadratics(H, c).lpNorm<Eigen::Infinity>() <= accept;
+    if (!ok) continue;
+    if (k == 1) c = Eigen::VectorXd::Ones(1);
+    bool seen = false;
+    for (const auto& f : found) seen = seen || 1.0 - std::abs(f.dot(c)) < options.same_line;
+    if (seen) continue;
+    found.push_back(c);
+    TangentLine line;
+    Eigen::VectorXd d = cone.kernel * c;
+    Eigen::Index big;
+    d.cwiseAbs().maxCoeff(&big);
+    if (d[big] < 0) d = -d;
+    line.direction = d.normalized();
+    line.quadratic_residual = quadratics(H, c).lpNorm<Eigen::Infinity>() / hmax;
+    line.isolated = tangent_rank(H, c, 1e-6 * hmax) >= k - 1;
+    cone.lines.push_back(line);
+    if (k == 1) break;
+  }
+  return cone;
+}
+
+}  // namespace rigidfold

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Benchmark report for large tessellations (issue 5): builds Release, runs every benchmark
+# of benchmarks/scaling_bench (one process per benchmark, so that each peak-memory figure
+# is its own), plus verdict_bench, and writes out/bench/BENCH.md with tables and plots
+# (python/plot_bench.py, matplotlib from Debian).
+#   bash scripts/bench_report.sh           quick set (up to 80k creases; minutes)
+#   bash scripts/bench_report.sh --large   adds Miura up to 1000 x 1000 cells (2M creases;
+#                                          long, several GiB)
+# Environment: BUILD_DIR (default build-bench), OUT (default out/bench).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${BUILD_DIR:-build-bench}"
+out="${OUT:-out/bench}"
+if [ "${1:-}" = "--large" ]; then export RIGIDFOLD_BENCH_LARGE=1; fi
+bash scripts/bootstrap.sh
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)" --target scaling_bench verdict_bench
+mkdir -p "$out/runs"
+rm -f "$out"/runs/*.json
+bench="$build/benchmarks/scaling_bench"
+i=0
+while IFS= read -r name; do
+  i=$((i + 1))
+  # Anchored regex of this one benchmark (its name contains '/' and digits only).
+  "$bench" --benchmark_filter="^${name}\$" --benchmark_format=json --benchmark_out_format=json \
+    --benchmark_out="$out/runs/$(printf '%03d' "$i").json" >/dev/null
+  echo "bench: $name"
+done < <("$bench" --benchmark_list_tests=true)
+"$build/benchmarks/verdict_bench" --benchmark_format=json --benchmark_out_format=json \
+  --benchmark_out="$out/runs/verdict.json" >/dev/null
+/usr/bin/python3 - "$out" <<'PY'
+import glob, json, sys
+out = sys.argv[1]
+merged = None
+for path in sorted(glob.glob(f"{out}/runs/[0-9]*.json")):
+    with open(path) as f:
+        d = json.load(f)
+    if merged is None:
+        merged = d
+    else:
+        merged["benchmarks"].extend(d["benchmarks"])
+with open(f"{out}/results.json", "w") as f:
+    json.dump(merged, f, indent=1)
+PY
+/usr/bin/python3 python/plot_bench.py "$out/results.json" "$out"
+echo "bench report: $out/BENCH.md"
