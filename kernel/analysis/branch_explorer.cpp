@@ -199,6 +199,18 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
       return static_cast<int>(br.path.size()) >= opt.max_points_per_branch;
     };
     const ContinuationResult cr = continue_one_dof(sys, leave.x, dep.direction, accept, opt.continuation);
+    if (br.path.size() == 1) {
+      // Not traced (e.g. more than 1 DOF just off the point): keep the departure point and its DOF.
+      record(leave.x);
+      Eigen::VectorXd r;
+      Eigen::SparseMatrix<double> J;
+      sys.evaluate(leave.x, r, J);
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(J)};
+      const auto& sv = svd.singularValues();
+      int rank = 0;
+      while (rank < sv.size() && sv[rank] > opt.cone.rank_tolerance * sv[0]) ++rank;
+      br.dof_at_departure = n - rank;
+    }
     if (stop_kind == 0) br.stopped_by = cr.stopped ? "max points" : cr.reason;
     if (stop_kind == 3) br.stopped_by = "reached a known point";
     if (stop_kind == 1) {
@@ -261,6 +273,7 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
         }
       }
     }
+    if (br.dof_at_departure < 0) br.dof_at_departure = 1;
     br.driving_begin = br.path.front()[br.driving_edge];
     br.driving_end = br.path.back()[br.driving_edge];
     out.branches.push_back(std::move(br));

@@ -84,6 +84,7 @@ struct BranchTrace {
   int first_wrong_crease = -1;
   std::string stopped_by;
   int stop_crease = -1;
+  int dof_at_departure = -1;          // 1 for a traced branch; >1: a multi-DOF family, not traced
   std::vector<SignSwitch> sign_switches;
 };
 

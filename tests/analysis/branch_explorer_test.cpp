@@ -1,5 +1,23 @@
-// Branch exploration through bifurcations (kernel/analysis/branch_explorer.hpp), seed 001
-// §4 (Types 1M and 2M at alpha = pi/6) and a flat-foldable degree-4 vertex.
+// Branch exploration through bifurcations (kernel/analysis/branch_explorer.hpp) on seed 001
+// §4, the modified square twists at alpha = pi/6 (edge order of data/generators/square_twist.hpp:
+// 0..3 sides AB BC CD DA; 4 + 2v, 5 + 2v the outer creases o_a, o_b of vertex v = A B C D;
+// 12 the diagonal BD). Seed dihedral phi = pi - |rho|; the seed's b1 = side AB, b4 = o_b of B
+// (edge 7), b5 = o_a of B (edge 6), d4 = edge 11, d5 = edge 10.
+//
+// Type 1M, letters of seed eq. (15) (sides M, o_a M, o_b V, diagonal V). Both seed paths are
+// found; each keeps every letter except one crease pair, which settles the discrepancy left
+// open last session (the figure with the letters, Fig. 7(a), is lost):
+//   Path 1: every letter but the diagonal's (it folds as a mountain all along); crease b5
+//           reaches 180 deg at phi_1^b = 0.41 pi (seed: facet interference from III_1,
+//           phi_1^b = 0.41 pi, to the folded state);
+//   Path 2: every letter but b4 and d4 near flat; they switch to their letters at
+//           phi_1^b = 0.41 pi (seed: III_2, phi_1^b = 0.41 pi).
+// So no branch leaving the flat state keeps all of eq. (15)'s letters, and the verdict with the
+// assignment is "no branch from flat keeps every letter".
+// Type 2M: one branch keeps every letter from flat to the interior bifurcation at
+// phi_1^b = 0.59 pi (seed: IV, 0.59 pi), located here to <= 1e-8 in the path parameter; there
+// the Jacobian loses rank (second singular value ~0, an independent check), the tangent cone
+// has two lines, and the explorer leaves the point along the other one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,92 +27,172 @@
 #include "data/generators/square_twist.hpp"
 #include "kernel/analysis/branch_explorer.hpp"
 #include "kernel/pattern/topology.hpp"
-#include "kernel/closure/closure_system.hpp"
-#include "kernel/solve/newton_projection.hpp"
-#include <Eigen/Dense>
-#include <Eigen/SparseCore>
 
 namespace rigidfold {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void print(const char* name, const BranchExploration& x) {
-  std::cout << name << ": " << x.points.size() << " points, " << x.branches.size() << " branches, " << x.seconds
-            << " s\n";
-  for (std::size_t i = 0; i < x.points.size(); ++i) {
-    const BranchPoint& p = x.points[i];
-    std::cout << "  point " << i << " " << p.kind << " edge " << p.parameter_edge << " = " << p.parameter
-              << " (+-" << p.parameter_uncertainty << ") k=" << p.kernel_dimension << " lines=" << p.tangent_lines
-              << " sigma2/sigmax=" << p.sigma_second_smallest / std::max(p.sigma_max, 1e-300) << " |rho_AB|/pi="
-              << std::abs(p.angles[0]) / kPi << "\n";
-  }
-  for (const BranchTrace& b : x.branches) {
-    std::cout << "  branch " << b.id << " " << b.from_point << "->" << b.to_point << " " << b.stopped_by << " crease "
-              << b.stop_crease << " pts " << b.path.size() << " letters " << b.signs_match_assignment << " (first wrong "
-              << b.first_wrong_crease << ") maxfold/pi " << b.max_fold / kPi << " res " << b.max_residual
-              << " AB end " << b.path.back()[0] << " switches";
-    for (const auto& s : b.sign_switches) std::cout << " " << s.crease << "@" << s.driving_value << "(edge " << b.driving_edge << ")";
-    std::cout << "\n    signs at departure:";
-    if (b.path.size() > 1)
-      for (int e = 0; e < 13; ++e) std::cout << (b.path[1][e] > 0 ? " V" : b.path[1][e] < 0 ? " M" : " 0");
-    std::cout << "\n";
-  }
+CreasePattern modified(double twist, generators::SquareTwistModifiedType type) {
+  generators::SquareTwistParams sp;
+  sp.twist = twist;
+  return generators::square_twist_modified(sp, type);
 }
 
-TEST(BranchExplorer, Seed001Type2M) {
-  generators::SquareTwistParams sp;
-  sp.twist = kPi / 6;
-  const CreasePattern p = generators::square_twist_modified(sp, generators::SquareTwistModifiedType::Type2M);
+// Sign of every crease at the first traced point of a branch matches `p`'s letters, except `skip`.
+bool departs_with_letters(const CreasePattern& p, const BranchTrace& b, std::initializer_list<int> skip) {
+  if (b.path.size() < 2) return false;
+  for (int e = 0; e < p.num_edges(); ++e) {
+    if (std::find(skip.begin(), skip.end(), e) != skip.end()) continue;
+    const double r = b.path[1][e];
+    if (p.assignments[e] == Assignment::Mountain && r >= 0) return false;
+    if (p.assignments[e] == Assignment::Valley && r <= 0) return false;
+  }
+  return true;
+}
+
+double phi1b(const Eigen::VectorXd& rho) { return kPi - std::abs(rho[0]); }
+
+TEST(BranchExplorerSeed001, Type2MBifurcationLocatedAndBothBranchesLeft) {
+  const CreasePattern p = modified(kPi / 6, generators::SquareTwistModifiedType::Type2M);
   const BranchExploration x = explore_branches(p, build_topology(p));
-  print("type2m", x);
-}
-
-TEST(BranchExplorer, Seed001Type1M) {
-  generators::SquareTwistParams sp;
-  sp.twist = kPi / 6;
-  const CreasePattern p = generators::square_twist_modified(sp, generators::SquareTwistModifiedType::Type1M);
-  const BranchExploration x = explore_branches(p, build_topology(p));
-  print("type1m", x);
-}
-
-}  // namespace
-}  // namespace rigidfold
-namespace rigidfold {
-namespace {
-TEST(BranchExplorerDebug, SigmaAlongType2MBranch) {
-  generators::SquareTwistParams sp;
-  sp.twist = kPi / 6;
-  const CreasePattern p = generators::square_twist_modified(sp, generators::SquareTwistModifiedType::Type2M);
-  const Topology t = build_topology(p);
-  const BranchExploration x = explore_branches(p, t);
-  const ClosureSystem sys(p, t);
+  ASSERT_TRUE(x.applicable);
+  ASSERT_EQ(x.points[0].kind, "flat");
+  EXPECT_EQ(x.points[0].kernel_dimension, 5);  // first order says little at flat
+  std::cout << "  type 2M: " << x.points.size() << " points, " << x.branches.size() << " branches, " << x.seconds
+            << " s; flat tangent cone " << x.points[0].tangent_lines << " lines\n";
+  int certified = 0;
   for (const BranchTrace& b : x.branches) {
-    if (b.stopped_by != "bifurcation") continue;
-    for (std::size_t i = b.path.size() > 6 ? b.path.size() - 6 : 0; i < b.path.size(); ++i) {
-      Eigen::VectorXd r;
-      Eigen::SparseMatrix<double> J;
-      sys.evaluate(sys.unknowns_from_edges(b.path[i]), r, J);
-      Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(J)};
-      std::cout << "  " << i << " AB/pi " << b.path[i][0] / kPi << " sv: " << svd.singularValues().transpose() << " res " << r.norm() << "\n";
-    }
-    const Eigen::VectorXd xa = sys.unknowns_from_edges(b.path[b.path.size() - 2]);
-    const Eigen::VectorXd xs = sys.unknowns_from_edges(b.path.back());
-    const int j = sys.unknown_of_edge(b.driving_edge);
-    for (int q = 0; q <= 20; ++q) {
-      const double w = 0.9 + 0.01 * q;
-      Eigen::VectorXd guess = xa + w * (xs - xa);
-      NewtonOptions no;
-      no.held_unknowns = {j};
-      const NewtonResult nr = newton_project(sys, guess, no);
-      Eigen::VectorXd r;
-      Eigen::SparseMatrix<double> J;
-      sys.evaluate(nr.x, r, J);
-      Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(J)};
-      std::cout << "  w " << w << " conv " << nr.converged << " sigmin " << svd.singularValues()[11] << " dist " << (nr.x - guess).norm() << " AB/pi " << nr.x[sys.unknown_of_edge(0)] / kPi << "\n";
-    }
-    break;
+    if (b.from_point != 0 || !b.signs_match_assignment || b.path.size() < 2) continue;
+    ++certified;
+    EXPECT_LE(b.max_residual, 1e-12);
+    ASSERT_EQ(b.stopped_by, "bifurcation");
+    ASSERT_GE(b.to_point, 0);
+    const BranchPoint& bp = x.points[b.to_point];
+    EXPECT_EQ(bp.kind, "bifurcation");
+    std::cout << "  bifurcation: phi_1^b = " << phi1b(bp.angles) / kPi << " pi (seed 0.59 pi), uncertainty "
+              << bp.parameter_uncertainty << " rad, sigma_(n-1)/sigma_max " << bp.sigma_second_smallest / bp.sigma_max
+              << ", residual " << bp.residual << ", kernel " << bp.kernel_dimension << ", lines " << bp.tangent_lines
+              << "\n";
+    EXPECT_NEAR(phi1b(bp.angles) / kPi, 0.59, 0.005);
+    EXPECT_LE(bp.parameter_uncertainty, 1e-8);
+    EXPECT_LE(bp.residual, 1e-12);
+    EXPECT_LE(bp.sigma_second_smallest, 1e-7 * bp.sigma_max);  // rank drop: a second null direction
+    EXPECT_EQ(bp.kernel_dimension, 2);
+    EXPECT_EQ(bp.tangent_lines, 2);
+    // Branches leave the bifurcation along the other line, both ways, and are traced.
+    int leaving = 0;
+    for (const BranchTrace& c : x.branches)
+      if (c.from_point == b.to_point && c.path.size() > 5) {
+        ++leaving;
+        EXPECT_LE(c.max_residual, 1e-12);
+      }
+    EXPECT_GE(leaving, 2);
   }
+  // Seed 001: Paths 1 and 2 both leave the flat state (VI) and meet again at IV; both keep
+  // every letter (their mirror images break all of them).
+  EXPECT_EQ(certified, 2);
 }
+
+TEST(BranchExplorerSeed001, Type1MPathsEachBreakOneLetterPair) {
+  const CreasePattern p = modified(kPi / 6, generators::SquareTwistModifiedType::Type1M);
+  const BranchExploration x = explore_branches(p, build_topology(p));
+  ASSERT_TRUE(x.applicable);
+  for (const BranchTrace& b : x.branches) {
+    EXPECT_FALSE(b.from_point == 0 && b.signs_match_assignment) << b.id;
+    if (b.dof_at_departure > 1) std::cout << "  type 1M: branch " << b.id << " leaves flat into a " << b.dof_at_departure << "-DOF family (not traced)\n";
+  }
+  int path1 = 0, path2 = 0;
+  for (const BranchTrace& b : x.branches) {
+    if (b.from_point != 0) continue;
+    if (departs_with_letters(p, b, {12})) {
+      ++path1;
+      // b5 or d5 reaches 180 deg: local facet interference at III_1.
+      EXPECT_EQ(b.stopped_by, "fold limit");
+      EXPECT_TRUE(b.stop_crease == 6 || b.stop_crease == 10) << b.stop_crease;
+      ASSERT_GE(b.to_point, 0);
+      const BranchPoint& bp = x.points[b.to_point];
+      EXPECT_EQ(bp.kind, "interference");
+      std::cout << "  type 1M path 1: crease " << b.stop_crease << " at 180 deg at phi_1^b = "
+                << phi1b(bp.angles) / kPi << " pi (seed III_1: 0.41 pi); diagonal "
+                << b.path[1][12] << " rad (mountain, letter V)\n";
+      EXPECT_NEAR(phi1b(bp.angles) / kPi, 0.41, 0.005);
+      EXPECT_LT(b.path[1][12], 0.0);
+      EXPECT_TRUE(b.sign_switches.empty());
+    }
+    if (departs_with_letters(p, b, {7, 11})) {
+      ++path2;
+      // b4 and d4 start against their letters and switch at III_2.
+      ASSERT_GE(b.sign_switches.size(), 2u);
+      EXPECT_LT(b.path[1][7], 0.0);
+      bool b4 = false;
+      for (const SignSwitch& s : b.sign_switches)
+        if (s.crease == 7) {
+          b4 = true;
+          EXPECT_FALSE(s.against_assignment);  // it switches TO its letter
+          // phi_1^b at the switch: interpolate the path's AB at the recorded driving value.
+          for (std::size_t i = 1; i < b.path.size(); ++i) {
+            const double d0 = b.path[i - 1][b.driving_edge], d1 = b.path[i][b.driving_edge];
+            if ((d0 - s.driving_value) * (d1 - s.driving_value) <= 0 && d0 != d1) {
+              const double f = (s.driving_value - d0) / (d1 - d0);
+              const double ab = std::abs(b.path[i - 1][0] + f * (b.path[i][0] - b.path[i - 1][0]));
+              std::cout << "  type 1M path 2: b4 switches M->V at phi_1^b = " << (kPi - ab) / kPi
+                        << " pi (seed III_2: 0.41 pi)\n";
+              EXPECT_NEAR((kPi - ab) / kPi, 0.41, 0.005);
+              break;
+            }
+          }
+        }
+      EXPECT_TRUE(b4);
+    }
+  }
+  EXPECT_GE(path1, 1);
+  EXPECT_GE(path2, 1);
+}
+
+// Seed 001 §4.1, Fig. 9: on Type 1M Path 1 the facet interference (b5 past 180 deg before the
+// folded state) "appears when alpha >= 23.4 deg" and its range grows with alpha. Sweep, then
+// bisect the onset: phi_1^b at III_1 falls to 0 as alpha falls to the onset.
+// Returns phi_1^b at III_1 (radians), or -1 if Path 1 reaches the folded state without it.
+double path1_interference(double twist) {
+  const CreasePattern p = modified(twist, generators::SquareTwistModifiedType::Type1M);
+  BranchExplorerOptions o;
+  o.max_branches = 40;
+  const BranchExploration x = explore_branches(p, build_topology(p), o);
+  for (const BranchTrace& b : x.branches) {
+    if (b.from_point != 0 || !departs_with_letters(p, b, {12})) continue;
+    if (b.to_point >= 0 && x.points[b.to_point].kind == "interference") return phi1b(x.points[b.to_point].angles);
+    return -1.0;
+  }
+  ADD_FAILURE() << "path 1 not found at twist " << twist;
+  return -1.0;
+}
+
+TEST(BranchExplorerSeed001, Type1MInterferenceOnsetNear23Point4Degrees) {
+  const double deg = kPi / 180;
+  double last_free = -1, first_hit = -1, prev_phi = 0;
+  for (double a : {15.0, 20.0, 25.0, 30.0, 35.0, 40.0}) {
+    const double phi = path1_interference(a * deg);
+    std::cout << "  alpha " << a << " deg: " << (phi < 0 ? std::string("no interference") : "interference from phi_1^b = " + std::to_string(phi / kPi) + " pi") << "\n";
+    if (phi < 0) {
+      EXPECT_LT(first_hit, 0) << "interference must persist above the onset";
+      last_free = a;
+    } else {
+      if (first_hit < 0) first_hit = a;
+      EXPECT_GE(phi, prev_phi);  // its range grows with alpha
+      prev_phi = phi;
+    }
+  }
+  ASSERT_GT(last_free, 0);
+  ASSERT_GT(first_hit, 0);
+  double lo = last_free, hi = first_hit;
+  while (hi - lo > 0.02) {
+    const double mid = 0.5 * (lo + hi);
+    (path1_interference(mid * deg) < 0 ? lo : hi) = mid;
+  }
+  std::cout << "  onset of facet interference on path 1: alpha = " << 0.5 * (lo + hi) << " deg (seed: 23.4)\n";
+  EXPECT_NEAR(0.5 * (lo + hi), 23.4, 0.1);
+}
+
 }  // namespace
 }  // namespace rigidfold
