@@ -34,6 +34,16 @@ void add_check_command(CLI::App& app) {
       std::cout << "  DOF " << j["dof"] << ", max closure residual along the branch " << j["max_residual"].get<double>()
                 << " rad, certificate mismatch " << j.value("certificate_mismatch", -1.0) << "\n";
     if (!j["obstruction"].is_null()) std::cout << "  obstruction: " << j["obstruction"]["message"].get<std::string>() << "\n";
+    if (j.contains("branch_exploration") && j["branch_exploration"].is_object()) {
+      int keep = 0;
+      for (const auto& b : j["branches"]) keep += b.value("signs_match_assignment", false) == true;
+      std::cout << "  branches: " << j["branches"].size() << " traced through " << j["branch_exploration"]["points"]
+                << " points; " << keep << " keep every letter from their start\n";
+      for (const auto& b : j["bifurcations"])
+        if (b["kind"] == "bifurcation")
+          std::cout << "  bifurcation where crease " << b["parameter_crease"] << " is at " << b["parameter"].get<double>() << " deg (+-" << b["location_uncertainty_rad"].get<double>()
+                    << " rad), " << b["tangent_lines"] << " tangent lines\n";
+    }
   });
 }
 

@@ -10,7 +10,9 @@
 //     projection from a small fold of the driving crease (held), 1-DOF pseudo-arclength
 //     continuation to the target, then at every driving angle a projection with the driving
 //     crease held. One branch (id 0). If the DOF at the start is not 1, it says so and
-//     traces nothing (exit 0).
+//     traces nothing (exit 0). With --branch ID|all: every branch through the flat state and
+//     the bifurcations (kernel/analysis/branch_explorer.hpp), each traced to its end, steps at
+//     the continuation's points; --to / --steps / --drive do not apply there.
 //   - applicable but not foldable (for the assignment, or in any mode with
 //     --ignore-assignment): nothing to trace; the obstruction is reported (exit 0).
 // Per step: every fold angle, the largest vertex-closure residual |log R_v| (rad), the
@@ -38,6 +40,7 @@
 #include <Eigen/SparseCore>
 
 #include "app/commands.hpp"
+#include "kernel/analysis/branch_explorer.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
@@ -567,8 +570,40 @@ void add_trace_command(CLI::App& app) {
     } else {
       model = "general loop-closure solver";
       if (verdict && verdict->verdict == Verdict::kUndecided) note = "multiplier model undecided: " + verdict->reason;
-      if (branch_id && *branch_id != 0)
-        throw InputError("--branch", "the general solver traces one branch (id 0); branch switching at bifurcations is not implemented");
+      if (branch_id || all) {
+        // Every branch through the flat state and the bifurcations (branch_explorer.hpp),
+        // each traced to its end; --to / --steps / --drive do not apply.
+        const BranchExploration x = explore_branches(p, t);
+        if (!x.applicable) throw InputError("--branch", "branch exploration does not apply: " + x.why_not);
+        model = "general loop-closure solver, branch exploration";
+        note = std::to_string(x.branches.size()) + " branches through " + std::to_string(x.points.size()) +
+               " points (flat, bifurcations, fold limits); each traced to its end";
+        if (branch_id && *branch_id >= static_cast<int>(x.branches.size()))
+          throw InputError("--branch", "branch " + std::to_string(*branch_id) + " does not exist (" +
+                                           std::to_string(x.branches.size()) + " branches: 0.." +
+                                           std::to_string(x.branches.size() - 1) + ")");
+        for (const BranchTrace& bt : x.branches) {
+          if (branch_id && bt.id != *branch_id) continue;
+          Branch b;
+          b.id = bt.id;
+          b.drive = bt.driving_edge;
+          b.to = b.reached = bt.driving_end;
+          b.dof = bt.dof_at_departure;
+          b.traced = bt.path.size() > 1 && bt.dof_at_departure == 1;
+          const std::string from = x.points[bt.from_point].kind + " point " + std::to_string(bt.from_point);
+          const std::string to = bt.to_point >= 0 ? x.points[bt.to_point].kind + " point " + std::to_string(bt.to_point) : "open end";
+          b.stopped_by = bt.stopped_by + " (from " + from + " to " + to + ")";
+          if (!b.traced) b.message = "not traced: " + bt.stopped_by + ", DOF " + std::to_string(bt.dof_at_departure) + " at departure";
+          // The flat state is the key frame; a branch from another point starts with it.
+          for (std::size_t k = bt.from_point == 0 ? 1 : 0; k < bt.path.size(); ++k) {
+            Step st;
+            st.rho = bt.path[k];
+            st.drive = bt.path[k][bt.driving_edge];
+            b.steps.push_back(std::move(st));
+          }
+          branches.push_back(std::move(b));
+        }
+      } else {
       int drive = -1;
       if (a->drive) {
         drive = *a->drive;
@@ -584,6 +619,7 @@ void add_trace_command(CLI::App& app) {
         if (drive < 0) throw InputError(a->pattern, "the pattern has no foldable crease to drive");
       }
       branches.push_back(trace_general(p, t, ref, drive, target(drive), a->steps, a->ignore));
+      }
     }
     for (Branch& b : branches) finish_steps(b, p, t, ref);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kernel/analysis/branch_explorer.hpp"
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
@@ -47,25 +48,98 @@ Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignm
   j["is_proof"] = g.verdict == Verdict::kRigidlyFoldable || g.is_proof;
   j["dof"] = g.verdict == Verdict::kRigidlyFoldable ? std::max(g.dof, 0) : 0;
   j["dof_tolerance"] = "rank of the closure Jacobian at the traced point, singular values below 1e-9 x largest dropped";
+  // Every branch through the flat state and its bifurcations, where the pattern is small
+  // enough for the dense second-order analysis (branch_explorer.hpp).
+  BranchExplorerOptions xo;
+  const BranchExploration x = explore_branches(p, t, xo);
   Json branches = Json::array();
-  if (g.verdict == Verdict::kRigidlyFoldable) {
-    branches.push_back({{"id", 0},
-                        {"signs_match_assignment", ignore_assignment ? Json(nullptr) : Json(g.sign_switches.empty())},
-                        {"range_deg", {0.0, g.max_fold * kDeg}},
-                        {"stopped_by", g.stopped_by},
-                        {"max_residual", g.max_residual},
-                        {"driving_crease", g.driving_crease},
-                        {"points", g.path.size()}});
-    j["certificate_mismatch"] = g.certificate_mismatch;
+  Json bifurcations = Json::array();
+  bool explored_yes = false;
+  if (x.applicable) {
+    for (const BranchTrace& b : x.branches) {
+      Json jb;
+      jb["id"] = b.id;
+      jb["from_point"] = b.from_point;
+      jb["to_point"] = b.to_point >= 0 ? Json(b.to_point) : Json(nullptr);
+      jb["dof"] = b.dof_at_departure;
+      jb["signs_match_assignment"] = ignore_assignment ? Json(nullptr) : Json(b.signs_match_assignment);
+      if (!b.signs_match_assignment && b.first_wrong_crease >= 0) jb["first_crease_against_assignment"] = b.first_wrong_crease;
+      jb["driving_crease"] = b.driving_edge;
+      jb["range_deg"] = {b.driving_begin * kDeg, b.driving_end * kDeg};
+      jb["max_fold_deg"] = b.max_fold * kDeg;
+      jb["stopped_by"] = b.stopped_by;
+      if (b.stop_crease >= 0) jb["stop_crease"] = b.stop_crease;
+      jb["max_residual"] = b.max_residual;
+      jb["points"] = b.path.size();
+      Json sw = Json::array();
+      for (const SignSwitch& s : b.sign_switches)
+        sw.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
+      jb["mv_switches"] = sw;
+      jb["global_interference"] =
+          b.global_interference_index < 0
+              ? Json(nullptr)
+              : Json({{"from_driving_deg", b.global_interference_driving * kDeg},
+                      {"faces", {b.global_interference_faces.first, b.global_interference_faces.second}}});
+      branches.push_back(jb);
+      // A branch from flat with every letter kept (or letters ignored), no face crossing,
+      // reaching the certificate fold: a rigid folding motion.
+      const bool letters_ok = ignore_assignment || b.signs_match_assignment;
+      int valid = static_cast<int>(b.path.size());
+      if (b.global_interference_index >= 0) valid = b.global_interference_index;
+      double reach = 0;
+      for (int k = 0; k < valid; ++k) reach = std::max(reach, std::min(b.path[k].cwiseAbs().maxCoeff(), std::numbers::pi));
+      if (b.from_point == 0 && letters_ok && b.dof_at_departure == 1 && reach >= options.certificate_fold &&
+          b.max_residual <= 1e-10)
+        explored_yes = true;
+    }
+    for (std::size_t i = 0; i < x.points.size(); ++i) {
+      const BranchPoint& pt = x.points[i];
+      if (pt.kind != "flat" && pt.kind != "bifurcation") continue;
+      std::vector<double> deg(pt.angles.data(), pt.angles.data() + pt.angles.size());
+      for (double& d : deg) d *= kDeg;
+      Json jp;
+      jp["point"] = i;
+      jp["kind"] = pt.kind;
+      if (pt.kind == "bifurcation") {
+        jp["parameter"] = pt.parameter * kDeg;
+        jp["parameter_crease"] = pt.parameter_edge;
+        jp["parameter_kind"] = "fold angle of crease " + std::to_string(pt.parameter_edge) + " (deg), the arriving branch's driving crease";
+        jp["location_uncertainty_rad"] = pt.parameter_uncertainty;
+        jp["sigma_ratio"] = pt.sigma_second_smallest / std::max(pt.sigma_max, 1e-300);
+      } else {
+        jp["parameter"] = 0.0;
+      }
+      jp["kernel_dimension"] = pt.kernel_dimension;
+      jp["tangent_lines"] = pt.tangent_lines;
+      jp["angles_deg"] = deg;
+      bifurcations.push_back(jp);
+    }
+  } else {
+    for (const auto& s : g.singular_points) {
+      std::vector<double> deg(s.angles.data(), s.angles.data() + s.angles.size());
+      for (double& d : deg) d *= kDeg;
+      bifurcations.push_back({{"parameter", s.driving_value * kDeg}, {"parameter_kind", "driving crease fold angle (deg)"},
+                              {"angles_deg", deg}, {"kind", "singular point (bordered determinant changes sign); not refined (pattern too large for the branch explorer)"}});
+    }
+    if (g.verdict == Verdict::kRigidlyFoldable)
+      branches.push_back({{"id", 0},
+                          {"signs_match_assignment", ignore_assignment ? Json(nullptr) : Json(g.sign_switches.empty())},
+                          {"range_deg", {0.0, g.max_fold * kDeg}},
+                          {"stopped_by", g.stopped_by},
+                          {"max_residual", g.max_residual},
+                          {"driving_crease", g.driving_crease},
+                          {"points", g.path.size()}});
+  }
+  if (g.verdict == Verdict::kRigidlyFoldable) j["certificate_mismatch"] = g.certificate_mismatch;
+  if (g.verdict != Verdict::kRigidlyFoldable && explored_yes) {
+    j["verdict"] = to_string(Verdict::kRigidlyFoldable);
+    j["rigidly_foldable"] = true;
+    j["reason"] = "a branch leaving the flat state keeps every letter and reaches the certificate fold (branch explorer); " + g.reason;
+    j["dof"] = 1;
   }
   j["branches"] = branches;
-  Json bifurcations = Json::array();
-  for (const auto& s : g.singular_points) {
-    std::vector<double> deg(s.angles.data(), s.angles.data() + s.angles.size());
-    for (double& d : deg) d *= kDeg;
-    bifurcations.push_back({{"parameter", s.driving_value * kDeg}, {"parameter_kind", "driving crease fold angle (deg)"},
-                            {"angles_deg", deg}, {"kind", "singular point (bordered determinant changes sign); location not refined"}});
-  }
+  j["branch_exploration"] = x.applicable ? Json({{"points", x.points.size()}, {"branches", x.branches.size()}, {"seconds", x.seconds}})
+                                         : Json(x.why_not);
   j["bifurcations"] = bifurcations;
   Json switches = Json::array();
   for (const auto& s : g.sign_switches)
@@ -87,8 +161,9 @@ Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignm
     j["obstruction"] = nullptr;
   }
   j["max_residual"] = g.max_residual;
-  j["interference"] = "local only (creases reaching 180 deg); global face-face test not yet implemented";
-  j["seconds"] = g.seconds;
+  j["interference"] = x.applicable ? "local (a crease reaching 180 deg ends a branch) and global (faces crossing, FCL AABB tree) at every explored point"
+                                   : "local only (creases reaching 180 deg): pattern too large for the branch explorer";
+  j["seconds"] = g.seconds + x.seconds;
   return j;
 }
 

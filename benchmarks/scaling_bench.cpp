@@ -5,12 +5,11 @@
 //   error_vs_closed_form max |rho - rho_closed_form| over the unknowns (radians)
 //   peak_rss_mb         getrusage peak RSS of the process so far (run one benchmark per
 //                       process for a per-benchmark figure: scripts/bench_report.sh does)
-// Sizes: Miura-ori n x n cells, about 2 n^2 creases. The default set stays small (a quick
-// run finishes in a few minutes); RIGIDFOLD_BENCH_LARGE=1 adds n up to 1000 (2 million
-// creases; needs minutes per benchmark and several GiB).
+// Sizes: Miura-ori n x n cells, about 2 n^2 creases; see register_all() at the end.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -124,7 +123,7 @@ void BM_Corrector(benchmark::State& state) {
   o.tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
   NewtonResult res;
   for (auto _ : state) res = newton_project(c.system, c.start, o);
-  state.counters["iterations"] = res.iterations;
+  state.counters["newton_iterations"] = res.iterations;
   state.counters["residual"] = res.residual_history.back();
   state.counters["error_vs_closed_form"] = (res.x - c.exact).cwiseAbs().maxCoeff();
   state.counters["ordering"] = static_cast<double>(state.range(1));
@@ -150,7 +149,8 @@ void BM_ContinuationStep(benchmark::State& state) {
   finish(state, c.pattern);
 }
 
-// A full trace: from rho_s = 5 deg (the flat state itself is a singular point) to 170 deg in about 100 equal arclength steps. Error:
+// A full trace: from rho_s = 5 deg (the flat state itself is a singular point) to 170 deg in
+// about 100 equal arclength steps. Error:
 // the worst distance of any traced point from the closed form at its own rho_s.
 void BM_Trace(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
@@ -242,7 +242,7 @@ void BM_WaterbombCorrector(benchmark::State& state) {
   NewtonResult res;
   for (auto _ : state) res = newton_project(sys, x0);
   state.counters["residual"] = res.residual_history.back();
-  state.counters["iterations"] = res.iterations;
+  state.counters["newton_iterations"] = res.iterations;
   finish(state, p);
 }
 
@@ -264,11 +264,14 @@ void BM_PerturbedCorrector(benchmark::State& state) {
   finish(state, p);
 }
 
+// Sizes (n x n Miura cells, about 2 n^2 creases): quick set up to 200 (80k creases);
+// RIGIDFOLD_BENCH_LARGE=1 adds 160 and 320 (205k creases); RIGIDFOLD_BENCH_LARGE=2 also adds
+// 1000 (2M creases) for the residual, Jacobian, factorisation and corrector.
 void register_all() {
-  const bool large = std::getenv("RIGIDFOLD_BENCH_LARGE") != nullptr;
+  const char* env = std::getenv("RIGIDFOLD_BENCH_LARGE");
+  const int large = env ? std::atoi(env) : 0;
   std::vector<int> sizes = {10, 30, 100, 200};
-  std::vector<int> big = {400, 700, 1000};
-  if (large) sizes.insert(sizes.end(), big.begin(), big.end());
+  if (large >= 1) sizes.insert(sizes.end(), {160, 320});
   auto add = [](const char* name, void (*fn)(benchmark::State&)) {
     return benchmark::RegisterBenchmark(name, fn)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
   };
@@ -281,18 +284,28 @@ void register_all() {
     add("BM_GradedMultiplier", BM_GradedMultiplier)->Arg(n);
     add("BM_GradedCorrector", BM_GradedCorrector)->Arg(n);
   }
+  if (large >= 2) {
+    add("BM_Residual", BM_Residual)->Arg(1000)->Iterations(1);
+    add("BM_Jacobian", BM_Jacobian)->Arg(1000)->Iterations(1);
+    add("BM_Factorize", BM_Factorize)->Args({1000, 0})->Iterations(1);
+    add("BM_Corrector", BM_Corrector)->Args({1000, 0, 12})->Iterations(1);
+  }
   // Solver settings (time against error) on one mid size: orderings and tolerances.
-  const int mid = large ? 400 : 100;
+  const int mid = large >= 1 ? 320 : 100;
   for (int ord = 1; ord <= 3; ++ord) {
     add("BM_Factorize", BM_Factorize)->Args({mid, ord});
     add("BM_Corrector", BM_Corrector)->Args({mid, ord, 12});
   }
   for (int tol : {6, 8, 10}) add("BM_Corrector", BM_Corrector)->Args({mid, 0, tol});
-  for (int n : {10, 30, 100}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
-  if (large)
-    for (int n : {200, 400}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
+  // Traces: no size with 300..2000 unknowns (n = 13..31): there the continuation checks the
+  // DOF with a dense SVD at every point (kernel/solve/continuation.cpp, kRankRevealingLimit),
+  // seconds per point, so a 100-step trace at n = 30 takes minutes. n = 10 (220 unknowns)
+  // uses the SVD cheaply; n >= 40 uses inverse iteration on the corrector's factorisation.
+  for (int n : {10, 40, 100}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
+  if (large >= 1)
+    for (int n : {160, 320}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
   for (int n : {10, 20, 40}) add("BM_Rank", BM_Rank)->Arg(n);
-  if (large) add("BM_Rank", BM_Rank)->Arg(100);
+  if (large >= 1) add("BM_Rank", BM_Rank)->Arg(100);
   for (int n : {5, 10, 20}) add("BM_WaterbombCorrector", BM_WaterbombCorrector)->Arg(n);
   for (int n : {10, 30, 100}) add("BM_PerturbedCorrector", BM_PerturbedCorrector)->Arg(n);
 }

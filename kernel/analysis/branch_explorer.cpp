@@ -7,7 +7,10 @@
 #include <deque>
 #include <numbers>
 
+#include "kernel/analysis/facet_interference.hpp"
 #include "kernel/closure/closure_system.hpp"
+#include "kernel/geometry/face_placement.hpp"
+#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/bifurcation.hpp"
 #include "kernel/solve/newton_projection.hpp"
 
@@ -81,6 +84,7 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
     if (pattern.assignments[e] == Assignment::Mountain) sign[e] = -1;
     if (pattern.assignments[e] == Assignment::Valley) sign[e] = 1;
   }
+  const Eigen::VectorXd reference = reference_fold_angles(pattern, topology);
   std::vector<Eigen::VectorXd> point_x;                  // unknowns of each point
   std::vector<std::vector<Eigen::VectorXd>> used;        // used unit directions per point
   std::deque<Departure> queue;
@@ -159,6 +163,15 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
           br.signs_match_assignment = false;
           br.first_wrong_crease = e;
         }
+      if (opt.check_global_interference && br.global_interference_index < 0) {
+        const FoldedGeometry g = place_faces(pattern, topology, rho, reference);
+        const FacetInterference fi = find_facet_interference(pattern, g.vertices);
+        if (!fi.face_pairs.empty()) {
+          br.global_interference_index = static_cast<int>(br.path.size());
+          br.global_interference_driving = br.driving_edge >= 0 ? rho[br.driving_edge] : 0.0;
+          br.global_interference_faces = fi.face_pairs.front();
+        }
+      }
       br.path.push_back(rho);
       br.residuals.push_back(res);
       br.max_residual = std::max(br.max_residual, res);

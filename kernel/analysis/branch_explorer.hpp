@@ -31,6 +31,7 @@
 //   sheets with holes are rejected (ClosureSystem throws).
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/analysis/general_verdict.hpp"  // SignSwitch
@@ -51,7 +52,14 @@ struct BranchExplorerOptions {
   int max_branches = 64;
   int max_points_per_branch = 3000;
   int max_unknowns = 400;             // larger patterns: not applicable (dense SVDs)
-  ContinuationOptions continuation;
+  bool check_global_interference = true;  // faces placed and tested (facet_interference.hpp) at every point
+  // Corrector stop 5e-13 (inf-norm) so that every vertex's |log R_v| (a 2-norm, up to sqrt(3)
+  // times larger) stays <= 1e-12 rad, the quality bar.
+  ContinuationOptions continuation = [] {
+    ContinuationOptions c;
+    c.tolerance = 5e-13;
+    return c;
+  }();
   TangentConeOptions cone;
 };
 
@@ -85,6 +93,11 @@ struct BranchTrace {
   std::string stopped_by;
   int stop_crease = -1;
   int dof_at_departure = -1;          // 1 for a traced branch; >1: a multi-DOF family, not traced
+  // Global facet interference (non-adjacent faces crossing): first path index where it is
+  // found (-1 if never), the driving crease's angle there, and one crossing face pair.
+  int global_interference_index = -1;
+  double global_interference_driving = 0.0;
+  std::pair<int, int> global_interference_faces{-1, -1};
   std::vector<SignSwitch> sign_switches;
 };
 

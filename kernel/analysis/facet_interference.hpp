@@ -14,6 +14,8 @@
 //     thickness);
 //   - any proper crossing of two non-coplanar faces counts (the intersection segment of two
 //     triangles always ends on an edge of one of them).
+// Two faces sharing a crease meet only on it whatever the fold angle, so a fold passing +-pi
+// is invisible here: that is the LOCAL check (a fold angle beyond +-pi), done by the callers.
 // Faces are triangulated as fans from their first vertex: exact for convex faces (all
 // generated and bundled patterns); a non-convex face may be over-reported.
 //

@@ -99,5 +99,32 @@ TEST(CheckCli, BadInputExitsTwo) {
   EXPECT_EQ(test::run_command(test::cli() + " check /nonexistent.fold --json").status, 2);
 }
 
+// Seed 001 Type 2M through the CLI: every branch from flat and through the interior
+// bifurcation, the bifurcation located to <= 1e-8 with its two tangent lines.
+TEST(CheckCli, Type2MBranchesAndLocatedBifurcation) {
+  const auto j = check(generators::square_twist_modified({}, generators::SquareTwistModifiedType::Type2M), "type2m");
+  EXPECT_EQ(j["rigidly_foldable"], true);
+  ASSERT_TRUE(j["branch_exploration"].is_object());
+  int located = 0;
+  for (const auto& b : j["bifurcations"]) {
+    if (b["kind"] != "bifurcation") continue;
+    ++located;
+    EXPECT_LE(b["location_uncertainty_rad"].get<double>(), 1e-8);
+    EXPECT_EQ(b["tangent_lines"], 2);
+    EXPECT_EQ(b["kernel_dimension"], 2);
+  }
+  EXPECT_GE(located, 1);
+  int keep = 0;
+  for (const auto& b : j["branches"]) {
+    EXPECT_LE(b["max_residual"].get<double>(), 1e-12);
+    if (b["signs_match_assignment"] == true && b["from_point"] == 0) {
+      ++keep;
+      EXPECT_EQ(b["stopped_by"], "bifurcation");
+      EXPECT_TRUE(b["global_interference"].is_null());
+    }
+  }
+  EXPECT_EQ(keep, 2);
+}
+
 }  // namespace
 }  // namespace rigidfold

@@ -233,6 +233,28 @@ TEST(TraceCli, SquareTwistModifiedUsesTheGeneralSolver) {
             << "), max residual " << k["max_residual"] << " rad\n";
 }
 
+// --branch all with the general solver: every branch of the explorer, one CSV per branch.
+TEST(TraceCli, Type2MEveryBranchThroughTheBifurcation) {
+  TempDir dir;
+  const std::string in = dir.file("type2m.fold"), csv = dir.file("b.csv");
+  write_fold(generators::square_twist_modified({}, generators::SquareTwistModifiedType::Type2M), in);
+  const auto j = run_json(in + " --branch all --csv " + csv);
+  ASSERT_FALSE(j.is_null());
+  EXPECT_EQ(j["model"], "general loop-closure solver, branch exploration");
+  int traced = 0, from_bifurcation = 0;
+  for (const auto& b : j["branches"]) {
+    if (b["traced"] != true) continue;
+    ++traced;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("b.b" + std::to_string(b["branch"].get<int>()) + ".csv")));
+    from_bifurcation += b["stopped_by"].get<std::string>().find("from bifurcation") != std::string::npos;
+  }
+  EXPECT_GE(traced, 20);
+  EXPECT_GE(from_bifurcation, 2);
+  EXPECT_LE(j["max_residual"].get<double>(), 1e-12);
+  // An unknown branch id is bad input.
+  EXPECT_TRUE(run_json(in + " --branch 999", 2).is_null());
+}
+
 TEST(TraceCli, NotOneDofSaysSo) {
   TempDir dir;
   generators::MiuraParams m;
