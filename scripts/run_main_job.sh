@@ -19,4 +19,14 @@ done
 for csv in "${csvs[@]}"; do
   /usr/bin/python3 python/plot_branches.py "$csv" --out "out/report/figures/$(basename "$csv" .csv)_branches.png" >/dev/null
 done
+# Branch diagrams of the modified square twists (seed 001 Figs. 8, 10): every branch through
+# the flat state and the located bifurcations; creases b2 (diagonal, 12), b3 (1), b4 (7),
+# b5 (6) against b1 (side AB, 0).
+mkdir -p out/report/branches
+for name in square_twist_30_type1m square_twist_30_type2m; do
+  ./build/app/rigidfold check "data/bundled/$name.fold" --json > "out/report/branches/$name.check.json"
+  ./build/app/rigidfold trace "data/bundled/$name.fold" --branch all --csv "out/report/branches/$name.csv" >/dev/null
+  /usr/bin/python3 python/plot_bifurcation.py "out/report/branches/$name.check.json" out/report/branches/"$name".b*.csv \
+    --x-edge 0 --edges 12,1,7,6 --out "out/report/figures/${name}_bifurcations.png" >/dev/null
+done
 echo "report: out/report/REPORT.md"
