@@ -43,6 +43,10 @@ struct Monitor {
   bool step(const ClosureSystem& sys, const Eigen::VectorXd& x, const Eigen::VectorXd& along) {
     const Eigen::MatrixXd Jx = dense_jacobian(sys, x);
     const int n = static_cast<int>(Jx.cols());
+    if (Jx.rows() < n - 1) {  // fewer rows than a DOF-1 path needs: no bordered determinant
+      ready = false;
+      return false;
+    }
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jx, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::VectorXd tx = svd.matrixV().col(n - 1);
     if (tx.dot(along) < 0) tx = -tx;

@@ -24,7 +24,9 @@ LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Ei
   LocatedSingularPoint out;
   const int n = system.num_unknowns();
   if (n < 2 || xa.size() != n || xb.size() != n) return out;
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd_a(dense_jacobian(system, xa), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::MatrixXd Ja = dense_jacobian(system, xa);
+  if (Ja.rows() < n - 1) return out;  // a DOF-1 path needs n - 1 independent rows
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd_a(Ja, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::MatrixXd Ua = svd_a.matrixU().leftCols(n - 1);
   Eigen::VectorXd ta = svd_a.matrixV().col(n - 1);
   if (ta.dot(xb - xa) < 0) ta = -ta;
