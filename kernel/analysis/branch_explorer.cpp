@@ -13,18 +13,12 @@
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/bifurcation.hpp"
 #include "kernel/solve/newton_projection.hpp"
+#include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-Eigen::MatrixXd dense_jacobian(const ClosureSystem& sys, const Eigen::VectorXd& x) {
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> J;
-  sys.evaluate(x, r, J);
-  return Eigen::MatrixXd(J);
-}
 
 // Bordered-determinant monitor along a DOF-1 branch.
 struct Monitor {
@@ -84,10 +78,7 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
   }
   out.applicable = true;
   std::vector<int> sign(pattern.num_edges(), 0);
-  for (int e = 0; e < pattern.num_edges(); ++e) {
-    if (pattern.assignments[e] == Assignment::Mountain) sign[e] = -1;
-    if (pattern.assignments[e] == Assignment::Valley) sign[e] = 1;
-  }
+  for (int e = 0; e < pattern.num_edges(); ++e) sign[e] = assigned_fold_sign(pattern.assignments[e]);
   const Eigen::VectorXd reference = reference_fold_angles(pattern, topology);
   std::vector<Eigen::VectorXd> point_x;                  // unknowns of each point
   std::vector<std::vector<Eigen::VectorXd>> used;        // used unit directions per point
@@ -222,11 +213,10 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
       Eigen::VectorXd r;
       Eigen::SparseMatrix<double> J;
       sys.evaluate(leave.x, r, J);
-      Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(J)};
-      const auto& sv = svd.singularValues();
-      int rank = 0;
-      while (rank < sv.size() && sv[rank] > opt.cone.rank_tolerance * sv[0]) ++rank;
-      br.dof_at_departure = n - rank;
+      RankOptions ro;
+      ro.relative_tolerance = opt.cone.rank_tolerance;  // the cut the tangent cones use
+      ro.compute_null_space = false;
+      br.dof_at_departure = jacobian_rank(J, ro).dof;
     }
     if (stop_kind == 0) br.stopped_by = cr.stopped ? "max points" : cr.reason;
     if (stop_kind == 3) br.stopped_by = "reached a known point";

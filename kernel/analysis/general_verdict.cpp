@@ -35,10 +35,7 @@ double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCo
 std::vector<int> assigned_signs(const CreasePattern& p, bool use) {
   std::vector<int> s(p.num_edges(), 0);
   if (!use) return s;
-  for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.assignments[e] == Assignment::Mountain) s[e] = -1;
-    if (p.assignments[e] == Assignment::Valley) s[e] = 1;
-  }
+  for (int e = 0; e < p.num_edges(); ++e) s[e] = assigned_fold_sign(p.assignments[e]);
   return s;
 }
 

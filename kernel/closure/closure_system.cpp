@@ -258,4 +258,11 @@ void ClosureSystem::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& residual
   }
 }
 
+Eigen::MatrixXd dense_jacobian(const ClosureSystem& system, const Eigen::VectorXd& x) {
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  system.evaluate(x, r, J);
+  return Eigen::MatrixXd(J);
+}
+
 }  // namespace rigidfold

@@ -130,4 +130,8 @@ class ClosureSystem {
   double angle_of_edge(int e, const Eigen::VectorXd& x) const;
 };
 
+// J(x) as a dense matrix (num_rows() x num_unknowns()): for the small-pattern analyses that
+// need SVDs and determinants (tangent cones, bifurcations, branch exploration).
+Eigen::MatrixXd dense_jacobian(const ClosureSystem& system, const Eigen::VectorXd& x);
+
 }  // namespace rigidfold

@@ -3,22 +3,10 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <cmath>
-#include <cstdint>
 
 #include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold {
-namespace {
-
-Eigen::MatrixXd dense_jacobian(const ClosureSystem& system, const Eigen::VectorXd& x) {
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> J;
-  system.evaluate(x, r, J);
-  return Eigen::MatrixXd(J);
-}
-
-}  // namespace
-
 LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Eigen::VectorXd& xa,
                                            const Eigen::VectorXd& xb, double parameter_tolerance) {
   LocatedSingularPoint out;
@@ -31,11 +19,12 @@ LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Ei
   Eigen::VectorXd ta = svd_a.matrixV().col(n - 1);
   if (ta.dot(xb - xa) < 0) ta = -ta;
   auto bordered = [&](const Eigen::VectorXd& x) {
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense_jacobian(system, x), Eigen::ComputeFullV);
+    const Eigen::MatrixXd J = dense_jacobian(system, x);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     Eigen::VectorXd t = svd.matrixV().col(n - 1);
     if (t.dot(ta) < 0) t = -t;
     Eigen::MatrixXd B(n, n);
-    B.topRows(n - 1) = Ua.transpose() * dense_jacobian(system, x);
+    B.topRows(n - 1) = Ua.transpose() * J;
     B.row(n - 1) = t.transpose();
     return B.determinant();
   };

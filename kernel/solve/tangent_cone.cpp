@@ -52,10 +52,7 @@ int tangent_rank(const std::vector<Eigen::MatrixXd>& H, const Eigen::VectorXd& c
 TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, const Eigen::VectorXd& x,
                          const TangentConeOptions& options) {
   TangentCone cone;
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> Js;
-  system.evaluate(x, r, Js);
-  const Eigen::MatrixXd J(Js);
+  const Eigen::MatrixXd J = dense_jacobian(system, x);
   const int m = static_cast<int>(J.rows()), n = static_cast<int>(J.cols());
   Eigen::BDCSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& sv = svd.singularValues();
