@@ -31,9 +31,17 @@ void add_check_command(CLI::App& app) {
     std::cout << a->pattern << ": " << j["verdict"].get<std::string>() << " (model: " << j["model"].get<std::string>() << ")\n";
     std::cout << "  " << j["reason"].get<std::string>() << "\n";
     if (j["rigidly_foldable"] == true)
-      std::cout << "  DOF " << j["dof"] << ", max closure residual along the branch " << j["max_residual"].get<double>()
-                << " rad, certificate mismatch " << j.value("certificate_mismatch", -1.0) << "\n";
+    {
+      std::cout << "  DOF " << j["dof"] << ", max closure residual along the branch " << j["max_residual"].get<double>() << " rad";
+      if (j.contains("certificate_mismatch")) std::cout << ", certificate mismatch " << j["certificate_mismatch"].get<double>();
+      std::cout << "\n";
+    }
     if (!j["obstruction"].is_null()) std::cout << "  obstruction: " << j["obstruction"]["message"].get<std::string>() << "\n";
+    if (j.contains("holes_closed"))
+      for (const auto& b : j["branches"])
+        std::cout << "  branch " << b["id"] << " from the given state: crease " << b["driving_crease"] << " "
+                  << b["range_deg"][0].get<double>() << " -> " << b["range_deg"][1].get<double>() << " deg, stopped by "
+                  << b["stopped_by"].get<std::string>() << "\n";
     if (j.contains("branch_exploration") && j["branch_exploration"].is_object()) {
       int keep = 0;
       for (const auto& b : j["branches"]) keep += b.value("signs_match_assignment", false) == true;

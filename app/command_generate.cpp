@@ -1,7 +1,7 @@
 // rigidfold generate KIND [options] --out FILE.fold
 // rigidfold generate bundle --out-dir DIR
 //
-// KIND: miura | square-twist | waterbomb | corrugated-p | corrugated-q, or `bundle` to write
+// KIND: miura | miura-tube | square-twist | square-twist-tessellation | waterbomb | corrugated-p | corrugated-q, or `bundle` to write
 // every pattern of bundled_examples() as DIR/NAME.fold. Angles are given in degrees.
 // A flag that does not apply to KIND, or a bad value, is an InputError naming the flag.
 #include <filesystem>
@@ -17,7 +17,9 @@
 #include "data/generators/double_corrugated.hpp"
 #include "data/generators/generator_common.hpp"
 #include "data/generators/miura.hpp"
+#include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
+#include "data/generators/square_twist_tessellation.hpp"
 #include "data/generators/waterbomb.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
@@ -42,6 +44,8 @@ struct GenerateOptions {
   std::string assignment;
   std::string diagonal = "none";
   double side = 1, pleat = 1;
+  double spacing = 2.5;
+  std::string layout = "type4";
   int n = 4;
   double radius = 1;
   std::string corners = "M";
@@ -52,7 +56,9 @@ struct GenerateOptions {
 const std::map<std::string, std::set<std::string>>& accepted_flags() {
   static const std::map<std::string, std::set<std::string>> m{
       {"miura", {"--rows", "--cols", "--alpha-deg", "--a", "--b", "--perturb", "--seed", "--fold-deg"}},
+      {"miura-tube", {"--rows", "--alpha-deg", "--a", "--b", "--fold-deg"}},
       {"square-twist", {"--twist-deg", "--type", "--assignment", "--diagonal", "--side", "--pleat"}},
+      {"square-twist-tessellation", {"--rows", "--cols", "--twist-deg", "--side", "--spacing", "--layout"}},
       {"waterbomb", {"--n", "--radius", "--corners"}},
       {"corrugated-p", {"--alpha-deg", "--beta-deg", "--a", "--b", "--assignment", "--odd"}},
       {"corrugated-q", {"--alpha-deg", "--beta-deg", "--a", "--b", "--assignment", "--odd"}},
@@ -67,7 +73,7 @@ std::string flag_for(const std::string& place) {
       {"rows", "--rows"}, {"cols", "--cols"}, {"alpha", "--alpha-deg"}, {"beta", "--beta-deg"},
       {"a", "--a"}, {"b", "--b"}, {"perturbation", "--perturb"}, {"twist", "--twist-deg"},
       {"side", "--side"}, {"pleat", "--pleat"}, {"assignment", "--assignment"}, {"diagonal", "--diagonal"},
-      {"sides", "--type"}, {"n", "--n"}, {"radius", "--radius"}, {"odd_joint", "--odd"}};
+      {"sides", "--type"}, {"fold", "--fold-deg"}, {"spacing", "--spacing"}, {"layout", "--layout"}, {"n", "--n"}, {"radius", "--radius"}, {"odd_joint", "--odd"}};
   auto it = common.find(place);
   return it == common.end() ? place : it->second;
 }
@@ -88,6 +94,29 @@ auto with_flags(F&& make) {
 std::string upper(std::string s) {
   for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
+}
+
+CreasePattern make_miura_tube(const GenerateOptions& o, bool fold_given) {
+  gen::MiuraTubeParams p;
+  p.rows = o.rows;
+  p.alpha = gen::rad(o.alpha_deg.value_or(60));
+  p.a = o.a;
+  p.b = o.b;
+  p.fold = gen::rad(fold_given ? o.fold_deg : 90.0);
+  return with_flags([&] { return gen::miura_tube(p); });
+}
+
+CreasePattern make_square_twist_tessellation(const GenerateOptions& o) {
+  gen::SquareTwistTessellationParams p;
+  p.rows = o.rows;
+  p.cols = o.cols;
+  p.twist = gen::rad(o.twist_deg);
+  p.side = o.side;
+  p.spacing = o.spacing;
+  return with_flags([&] {
+    p.layout = gen::square_twist_tessellation_layout_from_string(o.layout);
+    return gen::square_twist_tessellation(p);
+  });
 }
 
 CreasePattern make_miura(const GenerateOptions& o, bool folded) {
@@ -188,7 +217,7 @@ void run(const GenerateOptions& o, CLI::App& sub) {
   auto kind_it = accepted.find(o.kind);
   if (kind_it == accepted.end())
     throw InputError("KIND", "unknown pattern kind '" + o.kind +
-                                 "' (expected miura, square-twist, waterbomb, corrugated-p, corrugated-q or bundle)");
+                                 "' (expected miura, miura-tube, square-twist, square-twist-tessellation, waterbomb, corrugated-p, corrugated-q or bundle)");
   auto given = [&](const std::string& flag) { return sub.get_option(flag)->count() > 0; };
   for (const auto& [other_kind, flags] : accepted)
     for (const auto& flag : flags)
@@ -212,7 +241,9 @@ void run(const GenerateOptions& o, CLI::App& sub) {
 
   CreasePattern pattern;
   if (o.kind == "miura") pattern = make_miura(o, given("--fold-deg"));
+  else if (o.kind == "miura-tube") pattern = make_miura_tube(o, given("--fold-deg"));
   else if (o.kind == "square-twist") pattern = make_square_twist(o, given("--assignment"), given("--diagonal"), given("--type"));
+  else if (o.kind == "square-twist-tessellation") pattern = make_square_twist_tessellation(o);
   else if (o.kind == "waterbomb") pattern = make_waterbomb(o);
   else if (o.kind == "corrugated-p") pattern = make_corrugated(o, gen::CorrugatedUnit::P, given("--assignment"), given("--odd"));
   else pattern = make_corrugated(o, gen::CorrugatedUnit::Q, given("--assignment"), given("--odd"));
@@ -226,12 +257,16 @@ void add_generate_command(CLI::App& app) {
   auto opts = std::make_shared<GenerateOptions>();
   CLI::App* sub = app.add_subcommand("generate", "Write a generated crease pattern (FOLD)");
   sub->footer(
-      "KIND: miura | square-twist | waterbomb | corrugated-p | corrugated-q | bundle\n"
+      "KIND: miura | miura-tube | square-twist | square-twist-tessellation | waterbomb | corrugated-p | corrugated-q | bundle\n"
       "  miura          --rows --cols (panels) --alpha-deg (acute angle, default 60) --a (zig-zag length)\n"
       "                 --b (straight length) [--perturb AMP --seed S] [--fold-deg RHO: closed-form fold]\n"
+      "  miura-tube     --rows (cells along the tube) --alpha-deg --a --b --fold-deg (straight creases of\n"
+      "                 the given 3D state, default 90): two mirrored Miura strips bonded along zig-zags\n"
       "  square-twist   --twist-deg (default 30) --type 1|2|3|4|1M|2M (seed 001; default 3)\n"
       "                 or --assignment LETTERS (12: AB BC CD DA, o_a o_b of A B C D; 13 with --diagonal BD|AC)\n"
       "                 --side --pleat\n"
+      "  square-twist-tessellation  --rows --cols (twists) --twist-deg --side --spacing (centre to centre,\n"
+      "                 default 2.5) --layout type4|type3-rows (rigid, 1 DOF) | type1|type2 (not foldable)\n"
       "  waterbomb      --n (mountain folds, default 4) --radius --corners M|V\n"
       "  corrugated-p/q --alpha-deg (default 135) --beta-deg (default 60) --a --b\n"
       "                 --assignment LETTERS (12) or --odd DDDD (odd joint 3|4 per vertex); default rigid\n"
@@ -254,6 +289,8 @@ void add_generate_command(CLI::App& app) {
   sub->add_option("--diagonal", opts->diagonal, "Square twist with --assignment: none, BD or AC");
   sub->add_option("--side", opts->side, "Square twist: central square side");
   sub->add_option("--pleat", opts->pleat, "Square twist: outer crease length");
+  sub->add_option("--spacing", opts->spacing, "Square-twist tessellation: twist centre to centre");
+  sub->add_option("--layout", opts->layout, "Square-twist tessellation: type4, type3-rows, type1 or type2");
   sub->add_option("--n", opts->n, "Waterbomb: number of mountain (= valley) folds");
   sub->add_option("--radius", opts->radius, "Waterbomb: sheet circumradius");
   sub->add_option("--corners", opts->corners, "Waterbomb: assignment of the corner creases (M or V)");

@@ -123,8 +123,9 @@ std::string markdown(const Json& report) {
   md << "# rigidfold report\n\n";
   md << "Patterns from `" << report["input"].get<std::string>() << "`. The verdict comes from the cheapest exact model that "
         "applies: multiplier propagation where every interior vertex is a flat-foldable degree-4 vertex (a fold family "
-        "with its closure residual, or a loop of vertices whose loop gain is not 1). Patterns outside that model wait for "
-        "the general loop-closure solver and are reported as not-applicable. Where a file carries fold angles, faces are "
+        "with its closure residual, or a loop of vertices whose loop gain is not 1). Patterns outside that model go to "
+        "the general loop-closure solver, which searches for a folded point near flat and traces it; sheets with holes "
+        "(tubes) are checked from their given 3D state with one SE(3) closure per hole. Where a file carries fold angles, faces are "
         "placed by a spanning tree and the closure mismatch (relative to the pattern size) is the error of those angles.\n\n";
   md << "| pattern | V | E | F | interior | Kawasaki | Maekawa | verdict (M-V as given) | model | DOF | max residual (rad) | obstruction | verdict (M-V ignored) | local checks | closure mismatch of stored angles | time (s) |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

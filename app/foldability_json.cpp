@@ -7,6 +7,7 @@
 #include "kernel/analysis/branch_explorer.hpp"
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
+#include "kernel/analysis/reference_mobility.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
 
 namespace rigidfold::cli {
@@ -167,10 +168,74 @@ Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignm
   return j;
 }
 
+// Sheets with holes (tubes): mobility from the given 3D state with the SE(3) hole closures.
+Json mobility_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, int holes) {
+  ReferenceMobilityOptions options;
+  options.use_assignment = !ignore_assignment;
+  const ReferenceMobility m = reference_mobility(p, t, options);
+  Json j;
+  j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
+  j["verdict"] = to_string(m.verdict);
+  if (m.verdict == Verdict::kRigidlyFoldable) j["rigidly_foldable"] = true;
+  else if (m.verdict == Verdict::kNotRigidlyFoldable) j["rigidly_foldable"] = false;
+  else j["rigidly_foldable"] = nullptr;
+  j["model"] = "general loop-closure solver with SE(3) hole closures, from the given state";
+  j["model_choice"] = "the sheet has " + std::to_string(holes) +
+                      " hole(s): the multiplier model and the flat-state search do not apply; the given (3D) state is "
+                      "the reference";
+  j["reason"] = m.reason;
+  j["is_proof"] = m.verdict != Verdict::kUndecided;
+  j["dof"] = m.dof;
+  j["dof_tolerance"] = "rank of the closure Jacobian (vertex and hole rows) at the given state, singular values below "
+                       "1e-9 x largest dropped; kept " + std::to_string(m.sigma_kept) + ", dropped " +
+                       std::to_string(m.sigma_dropped);
+  j["holes_closed"] = m.holes;
+  j["reference_residual"] = m.reference_residual;
+  Json branches = Json::array();
+  for (const MobilityBranch& b : m.branches) {
+    Json jb;
+    jb["id"] = b.id;
+    jb["from_point"] = "given state";
+    jb["sense"] = b.sense;
+    jb["dof"] = m.dof;
+    jb["signs_match_assignment"] = ignore_assignment ? Json(nullptr) : Json(b.signs_match_assignment);
+    if (!b.signs_match_assignment && b.first_wrong_crease >= 0) jb["first_crease_against_assignment"] = b.first_wrong_crease;
+    jb["driving_crease"] = b.driving_edge;
+    jb["range_deg"] = {b.driving_begin * kDeg, b.driving_end * kDeg};
+    jb["max_fold_deg"] = b.max_fold * kDeg;
+    jb["stopped_by"] = b.stopped_by;
+    if (b.stop_crease >= 0) jb["stop_crease"] = b.stop_crease;
+    jb["max_residual"] = b.max_residual;
+    jb["points"] = b.path.size();
+    jb["valid_points"] = b.valid_points;
+    Json sw = Json::array();
+    for (const SignSwitch& s : b.sign_switches)
+      sw.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
+    jb["mv_switches"] = sw;
+    jb["global_interference"] =
+        b.interfering_faces.first < 0 ? Json(nullptr)
+                                      : Json({{"faces", {b.interfering_faces.first, b.interfering_faces.second}}});
+    branches.push_back(jb);
+  }
+  j["branches"] = branches;
+  j["bifurcations"] = Json::array();
+  if (m.verdict == Verdict::kNotRigidlyFoldable)
+    j["obstruction"] = {{"kind", "first-order rigid"}, {"message", m.reason}, {"least_residual", m.reference_residual}};
+  else
+    j["obstruction"] = nullptr;
+  j["max_residual"] = m.max_residual;
+  j["interference"] = "local (a crease reaching 180 deg ends a branch) and global (faces crossing, FCL AABB tree) at every traced point";
+  j["seconds"] = m.seconds;
+  return j;
+}
+
 }  // namespace
 
 Json foldability_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, bool force_general) {
   const auto start = std::chrono::steady_clock::now();
+  int holes = 0;
+  for (const Component& c : t.components) holes += c.holes;
+  if (holes > 0) return mobility_json(p, t, ignore_assignment, holes);
   if (force_general) return general_json(p, t, ignore_assignment, "forced (--general)");
   const FoldabilityVerdict v = ignore_assignment ? verdict_ignoring_assignment(p, t) : verdict_with_assignment(p, t);
   if (v.verdict == Verdict::kNotApplicable) {

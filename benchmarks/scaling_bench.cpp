@@ -19,6 +19,7 @@
 
 #include "data/generators/graded_miura.hpp"
 #include "data/generators/miura.hpp"
+#include "data/generators/square_twist_tessellation.hpp"
 #include "data/generators/waterbomb_tessellation.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
@@ -229,6 +230,49 @@ void BM_GradedCorrector(benchmark::State& state) {
   finish(state, p);
 }
 
+// The same comparison on a square-twist tessellation of the rigid Type4 layout (n x n
+// twists, about 8 n^2 creases; 1 DOF): the multiplier verdict against the general corrector
+// started from the multiplier family's state perturbed by 1e-4 rad (one crease held).
+generators::SquareTwistTessellationParams twist_tessellation(int n) {
+  generators::SquareTwistTessellationParams p;
+  p.rows = p.cols = n;
+  return p;
+}
+
+void BM_TwistMultiplier(benchmark::State& state) {
+  const CreasePattern p = generators::square_twist_tessellation(twist_tessellation(static_cast<int>(state.range(0))));
+  const Topology t = build_topology(p);
+  FoldabilityVerdict v;
+  for (auto _ : state) v = verdict_with_assignment(p, t);
+  state.counters["dof"] = v.dof;
+  state.counters["max_defect"] = v.max_loop_defect;
+  state.counters["mismatch"] = v.certificate_mismatch;
+  finish(state, p);
+}
+
+void BM_TwistCorrector(benchmark::State& state) {
+  const CreasePattern p = generators::square_twist_tessellation(twist_tessellation(static_cast<int>(state.range(0))));
+  const Topology t = build_topology(p);
+  const FoldabilityVerdict v = verdict_with_assignment(p, t);
+  if (v.verdict != Verdict::kRigidlyFoldable || !v.family) {
+    state.SkipWithError("the Type4 tessellation should be rigidly foldable");
+    return;
+  }
+  const ClosureSystem sys(p, t);
+  const Eigen::VectorXd exact = sys.unknowns_from_edges(v.family->angles(0.4));  // tan(rho/2) = m * 0.4
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
+  Eigen::VectorXd x0 = exact;
+  for (int k = 1; k < x0.size(); ++k) x0[k] += noise(rng);
+  NewtonOptions o;
+  o.held_unknowns = {0};
+  NewtonResult res;
+  for (auto _ : state) res = newton_project(sys, x0, o);
+  state.counters["residual"] = res.residual_history.back();
+  state.counters["error_vs_closed_form"] = (res.x - exact).cwiseAbs().maxCoeff();
+  finish(state, p);
+}
+
 // Multi-DOF: the waterbomb tessellation, a random small fold projected onto the manifold.
 void BM_WaterbombCorrector(benchmark::State& state) {
   generators::WaterbombTessellationParams wp;
@@ -307,6 +351,12 @@ void register_all() {
   for (int n : {10, 20, 40}) add("BM_Rank", BM_Rank)->Arg(n);
   if (large >= 1) add("BM_Rank", BM_Rank)->Arg(100);
   for (int n : {5, 10, 20}) add("BM_WaterbombCorrector", BM_WaterbombCorrector)->Arg(n);
+  std::vector<int> twists = {5, 20, 50};
+  if (large >= 1) twists.push_back(160);
+  for (int n : twists) {
+    add("BM_TwistMultiplier", BM_TwistMultiplier)->Arg(n);
+    add("BM_TwistCorrector", BM_TwistCorrector)->Arg(n);
+  }
   for (int n : {10, 30, 100}) add("BM_PerturbedCorrector", BM_PerturbedCorrector)->Arg(n);
 }
 

@@ -136,6 +136,7 @@ def targets_section(fams, exps):
     # Multiplier propagation against the general solver: graded Miura (scaling_bench) and
     # Miura (verdict_bench), at the largest size both ran.
     for mfam, gfam, mesh in (("BM_GradedMultiplier", "BM_GradedCorrector", "graded Miura"),
+                             ("BM_TwistMultiplier", "BM_TwistCorrector", "square-twist tessellation, Type4 layout"),
                              ("BM_MultiplierVerdict", "BM_GeneralCorrector", "Miura")):
         gm = {cells(r): r for r in fams.get(mfam, [])}
         gc = {cells(r): r for r in fams.get(gfam, [])}
@@ -273,10 +274,13 @@ def main():
     lines.append("")
 
     # Multiplier propagation against the general solver.
-    gm = {r["edges"]: r for r in fams.get("BM_GradedMultiplier", [])}
-    gc = {r["edges"]: r for r in fams.get("BM_GradedCorrector", [])}
-    if gm and gc:
-        lines.append("## Multiplier propagation against the general corrector (graded Miura)")
+    for mfam, gfam, mesh in (("BM_GradedMultiplier", "BM_GradedCorrector", "graded Miura"),
+                             ("BM_TwistMultiplier", "BM_TwistCorrector", "square-twist tessellation, Type4 layout")):
+        gm = {r["edges"]: r for r in fams.get(mfam, [])}
+        gc = {r["edges"]: r for r in fams.get(gfam, [])}
+        if not (gm and gc):
+            continue
+        lines.append(f"## Multiplier propagation against the general corrector ({mesh})")
         lines.append("")
         lines.append("| creases | propagation s | general s | speed-up | propagation mismatch | general error |")
         lines.append("|---|---|---|---|---|---|")

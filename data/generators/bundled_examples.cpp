@@ -3,6 +3,7 @@
 #include "data/generators/double_corrugated.hpp"
 #include "data/generators/generator_common.hpp"
 #include "data/generators/miura.hpp"
+#include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
 #include "data/generators/waterbomb.hpp"
 
@@ -28,6 +29,13 @@ std::vector<std::pair<std::string, CreasePattern>> bundled_examples() {
   perturbed.perturbation = 0.05;
   perturbed.seed = 7;
   out.emplace_back("miura_3x3_perturbed", miura_ori(perturbed));
+
+  // A sheet with a hole: two mirrored Miura strips bonded into a tube, given folded in 3D
+  // (straight creases at 90 deg); checked from that state with the SE(3) hole closure.
+  MiuraTubeParams tube;
+  tube.rows = 6;
+  tube.alpha = rad(60);
+  out.emplace_back("miura_tube_6_alpha60", miura_tube(tube));
 
   SquareTwistParams twist;
   twist.twist = rad(30);

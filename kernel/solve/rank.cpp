@@ -16,8 +16,13 @@ RankResult dense_rank(const Eigen::SparseMatrix<double>& J, const RankOptions& o
   res.rows = static_cast<int>(J.rows());
   res.cols = static_cast<int>(J.cols());
   res.method = "dense-svd";
-  const Eigen::MatrixXd Jd(J);
   const int n = res.cols;
+  if (res.rows == 0 || n == 0) {  // no constraint (or no unknown): Eigen's SVD does not take empty matrices
+    res.dof = n;
+    if (options.compute_null_space) res.null_space = Eigen::MatrixXd::Identity(n, n);
+    return res;
+  }
+  const Eigen::MatrixXd Jd(J);
   // Full V is needed for the null space (the trailing right singular vectors).
   const unsigned flags = options.compute_null_space ? static_cast<unsigned>(Eigen::ComputeFullV) : 0u;
   Eigen::BDCSVD<Eigen::MatrixXd> svd(Jd, flags);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "data/generators/miura.hpp"
+#include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "tests/support/run_command.hpp"
@@ -124,6 +125,31 @@ TEST(CheckCli, Type2MBranchesAndLocatedBifurcation) {
     }
   }
   EXPECT_EQ(keep, 2);
+}
+
+}  // namespace
+}  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// A sheet with a hole (the bundled Miura tube's generator): checked from its given 3D state
+// with the SE(3) hole closure instead of being refused.
+TEST(CheckCli, MiuraTubeIsCheckedFromItsGivenState) {
+  generators::MiuraTubeParams tp;
+  tp.rows = 4;
+  const auto j = check(generators::miura_tube(tp), "miura_tube");
+  EXPECT_EQ(j["rigidly_foldable"], true);
+  EXPECT_EQ(j["dof"], 1);
+  EXPECT_EQ(j["holes_closed"], 1);
+  EXPECT_NE(j["model"].get<std::string>().find("hole"), std::string::npos);
+  ASSERT_EQ(j["branches"].size(), 2u);
+  for (const auto& b : j["branches"]) {
+    EXPECT_EQ(b["stopped_by"], "fold limit");
+    EXPECT_EQ(b["signs_match_assignment"], true);
+    EXPECT_LE(b["max_residual"].get<double>(), 1e-11);
+  }
+  EXPECT_TRUE(j["obstruction"].is_null());
 }
 
 }  // namespace

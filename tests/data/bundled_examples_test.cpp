@@ -22,7 +22,7 @@ TEST(GeneratorBundle, NamesAndContents) {
     EXPECT_GT(p.num_faces(), 0) << name;
     EXPECT_TRUE(p.warnings.empty()) << name << ": " << (p.warnings.empty() ? "" : p.warnings[0]);
   }
-  EXPECT_EQ(names, (std::set<std::string>{"miura_4x4_alpha60", "miura_12x12_folded", "miura_3x3_perturbed", "square_twist_30_type1",
+  EXPECT_EQ(names, (std::set<std::string>{"miura_4x4_alpha60", "miura_12x12_folded", "miura_3x3_perturbed", "miura_tube_6_alpha60", "square_twist_30_type1",
                                           "square_twist_30_type2", "square_twist_30_type3", "square_twist_30_type4",
                                           "square_twist_30_type1m", "square_twist_30_type2m", "waterbomb_base",
                                           "corrugated_p_rigid", "corrugated_q_rigid"}));

@@ -172,3 +172,22 @@ TEST(SolverRank, FlatMiuraIsSingular) {
 
 }  // namespace
 }  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// A sheet with no interior vertex has no closure row: every crease is free. (Eigen's SVD
+// crashed on a 0 x n matrix before this case was handled.)
+TEST(SolverRank, NoRowsMeansEveryColumnIsFree) {
+  const Eigen::SparseMatrix<double> empty(0, 4);
+  const RankResult r = jacobian_rank(empty);
+  EXPECT_EQ(r.rank, 0);
+  EXPECT_EQ(r.dof, 4);
+  ASSERT_EQ(r.null_space.cols(), 4);
+  EXPECT_LE((r.null_space.transpose() * r.null_space - Eigen::MatrixXd::Identity(4, 4)).norm(), 1e-15);
+  const RankResult none = jacobian_rank(Eigen::SparseMatrix<double>(3, 0));
+  EXPECT_EQ(none.dof, 0);
+}
+
+}  // namespace
+}  // namespace rigidfold

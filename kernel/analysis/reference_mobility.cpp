@@ -1,0 +1,181 @@
+#include "kernel/analysis/reference_mobility.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "kernel/analysis/facet_interference.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/geometry/face_placement.hpp"
+#include "kernel/geometry/fold_angles.hpp"
+#include "kernel/solve/continuation.hpp"
+#include "kernel/solve/newton_projection.hpp"
+#include "kernel/solve/rank.hpp"
+
+namespace rigidfold {
+namespace {
+
+// Checks one accepted point of a branch; returns true when the branch must stop there.
+class BranchWatch {
+ public:
+  BranchWatch(const CreasePattern& p, const Topology& t, const ClosureSystem& sys, const Eigen::VectorXd& reference,
+              const ReferenceMobilityOptions& o, MobilityBranch& b)
+      : p_(p), t_(t), sys_(sys), reference_(reference), o_(o), b_(b), previous_(reference) {
+    for (int e = 0; e < p.num_edges() && b.signs_match_assignment; ++e)
+      if (sys.unknown_of_edge(e) >= 0 && assigned_fold_sign(p.assignments[e]) * reference[e] < 0) {
+        b.signs_match_assignment = false;  // the given state itself folds e against its letter
+        b.first_wrong_crease = e;
+      }
+  }
+
+  Eigen::VectorXd angles(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd rho = sys_.edges_from_unknowns(x);
+    for (int e = 0; e < p_.num_edges(); ++e)
+      if (sys_.unknown_of_edge(e) < 0) rho[e] = reference_[e];  // F/J hinges keep their reference angle
+    return rho;
+  }
+
+  bool stop_at(const Eigen::VectorXd& x) {
+    const Eigen::VectorXd rho = angles(x);
+    b_.path.push_back(rho);
+    b_.max_fold = std::max(b_.max_fold, rho.cwiseAbs().maxCoeff());
+    // A point past a fold limit is not physical: the branch ends there, and sign changes met
+    // on the way to it (creases passing through flat as the layers close) are not switches.
+    for (int e = 0; e < p_.num_edges(); ++e)
+      if (std::abs(rho[e]) >= o_.fold_limit) return finish("fold limit", e);
+    for (int e = 0; e < p_.num_edges(); ++e) {
+      if (sys_.unknown_of_edge(e) < 0) continue;
+      if (previous_[e] * rho[e] < 0) {
+        const double s = previous_[e] / (previous_[e] - rho[e]);
+        const double drive = previous_[b_.driving_edge] + s * (rho[b_.driving_edge] - previous_[b_.driving_edge]);
+        const bool against = assigned_fold_sign(p_.assignments[e]) * rho[e] < 0;
+        b_.sign_switches.push_back({e, drive, against});
+        if (against && b_.signs_match_assignment) {
+          b_.signs_match_assignment = false;
+          b_.first_wrong_crease = e;
+        }
+        if (against && o_.use_assignment) return finish("sign switch", e);
+      }
+    }
+    previous_ = rho;
+    const bool letters_ok = !o_.use_assignment || b_.signs_match_assignment;
+    const FoldedGeometry g = place_faces(p_, t_, rho, reference_);
+    const FacetInterference fi = find_facet_interference(p_, g.vertices);
+    if (!fi.face_pairs.empty()) {
+      b_.interfering_faces = fi.face_pairs.front();
+      return finish("global interference", -1);
+    }
+    if (letters_ok) b_.valid_points = static_cast<int>(b_.path.size());
+    if (b_.path.size() > 10 && (rho - reference_).cwiseAbs().maxCoeff() < 0.5 * o_.max_step)
+      return finish("closed loop", -1);
+    return false;
+  }
+
+ private:
+  bool finish(const char* why, int crease) {
+    b_.stopped_by = why;
+    b_.stop_crease = crease;
+    return true;
+  }
+  const CreasePattern& p_;
+  const Topology& t_;
+  const ClosureSystem& sys_;
+  const Eigen::VectorXd& reference_;
+  const ReferenceMobilityOptions& o_;
+  MobilityBranch& b_;
+  Eigen::VectorXd previous_;
+};
+
+}  // namespace
+
+ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, const ReferenceMobilityOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  ReferenceMobility m;
+  ClosureOptions co;
+  co.close_holes = true;
+  const ClosureSystem sys(p, t, co);
+  m.holes = sys.num_holes();
+  const Eigen::VectorXd reference = reference_fold_angles(p, t);
+  const Eigen::VectorXd x0 = sys.unknowns_from_edges(reference);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  sys.evaluate(x0, r, J);
+  m.reference_residual = r.size() ? r.lpNorm<Eigen::Infinity>() : 0.0;
+  const RankResult rank = jacobian_rank(J);
+  m.dof = rank.dof;
+  m.sigma_kept = rank.sigma_kept;
+  m.sigma_dropped = rank.sigma_dropped;
+  m.rank_threshold = rank.threshold;
+  if (m.dof == 0) {
+    m.verdict = Verdict::kNotRigidlyFoldable;
+    m.reason = "the reference state is first-order rigid (closure Jacobian of full column rank), hence rigid";
+  } else {
+    // The crease that moves most along the first null direction drives (and names) both branches.
+    const Eigen::VectorXd null_edges = sys.edges_from_unknowns(rank.null_space.col(0));
+    int drive = 0;
+    null_edges.cwiseAbs().maxCoeff(&drive);
+    for (int sense : {1, -1}) {
+      MobilityBranch b;
+      b.id = static_cast<int>(m.branches.size());
+      b.sense = sense;
+      b.driving_edge = drive;
+      b.driving_begin = reference[drive];
+      BranchWatch watch(p, t, sys, reference, o, b);
+      if (m.dof == 1) {
+        ContinuationOptions copt;
+        copt.max_step = o.max_step;
+        copt.initial_step = std::min(copt.initial_step, o.max_step);
+        copt.max_points = o.max_points;
+        copt.tolerance = o.tolerance;
+        const Eigen::VectorXd direction = sense * rank.null_space.col(0);
+        const ContinuationResult cr = continue_one_dof(
+            sys, x0, direction, [&](const Eigen::VectorXd& x) { return watch.stop_at(x); }, copt);
+        for (const ContinuationPoint& pt : cr.points) b.max_residual = std::max(b.max_residual, pt.residual);
+        if (b.stopped_by.empty()) b.stopped_by = cr.reason;
+      } else {
+        NewtonOptions no;
+        no.tolerance = o.tolerance;
+        no.held_unknowns = {sys.unknown_of_edge(drive)};
+        Eigen::VectorXd x = x0;
+        double h = o.driven_step;
+        for (int k = 0; k < o.max_points; ++k) {
+          Eigen::VectorXd trial = x;
+          trial[no.held_unknowns[0]] += sense * h;
+          const NewtonResult nr = newton_project(sys, trial, no);
+          if (!nr.converged) {
+            h *= 0.5;
+            if (h < 1e-6) {
+              b.stopped_by = "projection failed";
+              break;
+            }
+            continue;
+          }
+          x = nr.x;
+          b.max_residual = std::max(b.max_residual, nr.residual_history.back());
+          if (watch.stop_at(x)) break;
+        }
+        if (b.stopped_by.empty()) b.stopped_by = "max points";
+      }
+      if (!b.path.empty()) b.driving_end = b.path.back()[drive];
+      m.max_residual = std::max(m.max_residual, b.max_residual);
+      m.branches.push_back(std::move(b));
+    }
+    bool moved = false;
+    for (const MobilityBranch& b : m.branches)
+      for (int k = 0; k < b.valid_points; ++k)
+        if (std::abs(b.path[k][drive] - reference[drive]) >= o.min_motion) moved = true;
+    if (moved) {
+      m.verdict = Verdict::kRigidlyFoldable;
+      m.reason = "DOF " + std::to_string(m.dof) + " at the reference state; a traced branch moves crease " +
+                 std::to_string(drive) + " by at least " + std::to_string(o.min_motion) + " rad" +
+                 (o.use_assignment ? " with every letter kept" : "");
+    } else {
+      m.verdict = Verdict::kUndecided;
+      m.reason = "DOF " + std::to_string(m.dof) +
+                 " at the reference state (first-order), but no traced branch moved far enough with every letter kept";
+    }
+  }
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return m;
+}
+
+}  // namespace rigidfold

@@ -1,0 +1,81 @@
+#pragma once
+// Mobility of a sheet from its own (3D) reference state: the verdict for sheets that are not
+// disks (tubes, frames: DESIGN.md, "one SE(3) closure per hole"), whose given state is the
+// only known configuration (a bonded tube has no flat development).
+//
+// Method.
+//  1. Closure system with the SE(3) hole rows (ClosureOptions::close_holes); its zero is the
+//     reference state x0 = reference_fold_angles. DOF = n - rank J(x0) (jacobian_rank, cut
+//     stated in RankResult). DOF 0 is a proof of rigidity (first-order rigid => rigid).
+//  2. DOF 1: pseudo-arclength continuation (continue_one_dof) from x0 both ways.
+//     DOF > 1: projected driving, both ways: the crease with the largest component in the
+//     first null vector is stepped by `driven_step` and the rest Newton-projected
+//     (minimum-norm) from the previous point.
+//     A branch stops at a fold limit (some crease reaching +-fold_limit: local interference),
+//     at a sign switch against a letter (when use_assignment), when faces cross (global
+//     interference, facet_interference.hpp, checked at every point), when the path returns
+//     to x0 (a closed loop of motion), when continuation fails, or at max_points.
+//  3. Verdict: rigidly foldable when DOF >= 1 and a branch moves its driving crease by at
+//     least min_motion within its valid points (every letter kept, if used, from the given
+//     state on; no face crossing; no fold past the limit); not foldable when DOF = 0;
+//     otherwise undecided.
+//
+// Units: radians; fold angles per edge, FOLD sign (valley > 0).
+#include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernel/analysis/general_verdict.hpp"  // SignSwitch
+#include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
+
+namespace rigidfold {
+
+struct ReferenceMobilityOptions {
+  bool use_assignment = true;
+  double fold_limit = 3.14159265358979 - 1e-6;  // |rho| at which a branch ends (local interference)
+  double min_motion = 0.1;                       // radians of driving crease for a "yes"
+  double max_step = 0.05;                        // continuation arclength step cap (radians)
+  double driven_step = 0.02;                     // DOF > 1: driving crease step (radians)
+  int max_points = 4000;                         // per branch
+  double tolerance = 1e-12;                      // corrector residual (radians)
+};
+
+struct MobilityBranch {
+  int id = 0;
+  int sense = 1;                          // +1 / -1: the two ways out of the reference
+  int driving_edge = -1;                  // crease whose fold angle parameterises the branch
+  double driving_begin = 0, driving_end = 0;  // radians
+  double max_fold = 0;                    // largest |rho| reached (radians)
+  std::string stopped_by;                 // "fold limit", "sign switch", "global interference", "closed loop", "max points", or the continuation's reason
+  int stop_crease = -1;
+  double max_residual = 0;
+  bool signs_match_assignment = true;
+  int first_wrong_crease = -1;
+  std::vector<SignSwitch> sign_switches;
+  std::pair<int, int> interfering_faces{-1, -1};
+  std::vector<Eigen::VectorXd> path;      // per-edge fold angles at every accepted point
+  // Leading points of `path` that are a valid motion: every letter kept (when used) from the
+  // given state on, no face crossing, no fold past the limit.
+  int valid_points = 0;
+};
+
+struct ReferenceMobility {
+  Verdict verdict = Verdict::kUndecided;
+  int dof = 0;                     // at the reference state
+  int holes = 0;                   // SE(3) hole closures used
+  double reference_residual = 0;   // ||r(x0)||_inf
+  double sigma_kept = 0, sigma_dropped = 0, rank_threshold = 0;  // the rank cut
+  std::vector<MobilityBranch> branches;
+  double max_residual = 0;
+  std::string reason;
+  double seconds = 0;
+};
+
+// Inputs: a validated pattern and its topology (any sheet; holes are closed).
+// Throws std::runtime_error for a handle (genus > 0), as ClosureSystem does.
+ReferenceMobility reference_mobility(const CreasePattern& pattern, const Topology& topology,
+                                     const ReferenceMobilityOptions& options = {});
+
+}  // namespace rigidfold
