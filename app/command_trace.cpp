@@ -13,6 +13,10 @@
 //     traces nothing (exit 0). With --branch ID|all: every branch through the flat state and
 //     the bifurcations (kernel/analysis/branch_explorer.hpp), each traced to its end, steps at
 //     the continuation's points; --to / --steps / --drive do not apply there.
+//   - a sheet with holes (a tube): the two branches through its given 3D state, traced with
+//     the SE(3) hole closures (kernel/analysis/reference_mobility.hpp); the given state is
+//     the first step; branch 0 by default, --branch 1|all for the other; --to / --steps /
+//     --drive do not apply.
 //   - applicable but not foldable (for the assignment, or in any mode with
 //     --ignore-assignment): nothing to trace; the obstruction is reported (exit 0).
 // Per step: every fold angle, the largest vertex-closure residual |log R_v| (rad), the
@@ -41,6 +45,7 @@
 
 #include "app/commands.hpp"
 #include "kernel/analysis/branch_explorer.hpp"
+#include "kernel/analysis/reference_mobility.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
@@ -524,7 +529,44 @@ void add_trace_command(CLI::App& app) {
     } else {
       note = "general solver forced (--general)";
     }
-    if (verdict && verdict->verdict == Verdict::kRigidlyFoldable && verdict->family) {
+    int holes = 0;
+    for (const Component& c : t.components) holes += c.holes;
+    if (holes > 0) {
+      // A sheet with holes (a tube): the branches through its given 3D state, traced both
+      // ways with the SE(3) hole closures (reference_mobility.hpp); --drive/--to/--steps do
+      // not apply. Without --branch: branch 0.
+      ReferenceMobilityOptions mo;
+      mo.use_assignment = !a->ignore;
+      const ReferenceMobility m = reference_mobility(p, t, mo);
+      model = "general loop-closure solver with SE(3) hole closures, from the given state";
+      note = std::to_string(holes) + " hole(s); DOF " + std::to_string(m.dof) + " at the given state; " + m.reason;
+      if (branch_id && *branch_id >= static_cast<int>(m.branches.size()))
+        throw InputError("--branch", "branch " + std::to_string(*branch_id) + " does not exist (" +
+                                         std::to_string(m.branches.size()) + " branches)");
+      for (const MobilityBranch& mb : m.branches) {
+        if (branch_id ? mb.id != *branch_id : (!all && mb.id != 0)) continue;
+        Branch b;
+        b.id = mb.id;
+        b.drive = mb.driving_edge;
+        b.to = b.reached = mb.driving_end;
+        b.dof = m.dof;
+        b.traced = !mb.path.empty();
+        b.stopped_by = mb.stopped_by;
+        b.max_residual = mb.max_residual;  // hole rows included (finish_steps adds the vertex rows)
+        if (!b.traced) b.message = "not traced: " + mb.stopped_by;
+        Step start;  // the given state is the key frame
+        start.rho = ref;
+        start.drive = ref[mb.driving_edge];
+        b.steps.push_back(std::move(start));
+        for (const Eigen::VectorXd& rho : mb.path) {
+          Step st;
+          st.rho = rho;
+          st.drive = rho[mb.driving_edge];
+          b.steps.push_back(std::move(st));
+        }
+        branches.push_back(std::move(b));
+      }
+    } else if (verdict && verdict->verdict == Verdict::kRigidlyFoldable && verdict->family) {
       model = verdict->model;
       const FoldFamily& f = *verdict->family;
       if (f.num_components == 0) throw std::runtime_error("foldable verdict with an empty family");

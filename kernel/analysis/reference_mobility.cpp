@@ -1,6 +1,8 @@
 #include "kernel/analysis/reference_mobility.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <numbers>
 #include <cmath>
 
 #include "kernel/analysis/facet_interference.hpp"
@@ -19,7 +21,8 @@ class BranchWatch {
  public:
   BranchWatch(const CreasePattern& p, const Topology& t, const ClosureSystem& sys, const Eigen::VectorXd& reference,
               const ReferenceMobilityOptions& o, MobilityBranch& b)
-      : p_(p), t_(t), sys_(sys), reference_(reference), o_(o), b_(b), previous_(reference) {
+      : p_(p), t_(t), sys_(sys), reference_(reference), o_(o), b_(b), previous_(reference),
+        previous_x_(sys.unknowns_from_edges(reference)) {
     for (int e = 0; e < p.num_edges() && b.signs_match_assignment; ++e)
       if (sys.unknown_of_edge(e) >= 0 && assigned_fold_sign(p.assignments[e]) * reference[e] < 0) {
         b.signs_match_assignment = false;  // the given state itself folds e against its letter
@@ -38,10 +41,23 @@ class BranchWatch {
     const Eigen::VectorXd rho = angles(x);
     b_.path.push_back(rho);
     b_.max_fold = std::max(b_.max_fold, rho.cwiseAbs().maxCoeff());
-    // A point past a fold limit is not physical: the branch ends there, and sign changes met
-    // on the way to it (creases passing through flat as the layers close) are not switches.
+    // A point past a fold limit is not physical: the branch ends at the limit itself, solved
+    // with the first crease to cross it held at +-pi (the state where the layers close).
+    int crossing = -1;
+    double first = 2.0;
     for (int e = 0; e < p_.num_edges(); ++e)
-      if (std::abs(rho[e]) >= o_.fold_limit) return finish("fold limit", e);
+      if (sys_.unknown_of_edge(e) >= 0 && std::abs(rho[e]) >= o_.fold_limit) {
+        const double s = (o_.fold_limit - std::abs(previous_[e])) / (std::abs(rho[e]) - std::abs(previous_[e]));
+        if (s < first) {
+          first = s;
+          crossing = e;
+        }
+      }
+    if (crossing >= 0) {
+      b_.path.back() = end_at_limit(x, crossing, std::clamp(first, 0.0, 1.0));
+      b_.max_fold = std::max(b_.max_fold, b_.path.back().cwiseAbs().maxCoeff());
+      return finish("fold limit", crossing);
+    }
     for (int e = 0; e < p_.num_edges(); ++e) {
       if (sys_.unknown_of_edge(e) < 0) continue;
       if (previous_[e] * rho[e] < 0) {
@@ -57,6 +73,7 @@ class BranchWatch {
       }
     }
     previous_ = rho;
+    previous_x_ = x;
     const bool letters_ok = !o_.use_assignment || b_.signs_match_assignment;
     const FoldedGeometry g = place_faces(p_, t_, rho, reference_);
     const FacetInterference fi = find_facet_interference(p_, g.vertices);
@@ -71,6 +88,22 @@ class BranchWatch {
   }
 
  private:
+  // The point where crease e reaches +-pi between the previous point and x (fraction s of
+  // the way, linearly): Newton projection with e held at +-pi. If it does not converge, the
+  // previous point ends the branch.
+  Eigen::VectorXd end_at_limit(const Eigen::VectorXd& x, int e, double s) {
+    Eigen::VectorXd start = previous_x_ + s * (x - previous_x_);
+    const int k = sys_.unknown_of_edge(e);
+    start[k] = std::copysign(std::numbers::pi, x[k]);
+    NewtonOptions no;
+    no.tolerance = o_.tolerance;
+    no.held_unknowns = {k};
+    const NewtonResult nr = newton_project(sys_, start, no);
+    if (!nr.converged) return previous_;
+    b_.max_residual = std::max(b_.max_residual, nr.residual_history.back());
+    return angles(nr.x);
+  }
+
   bool finish(const char* why, int crease) {
     b_.stopped_by = why;
     b_.stop_crease = crease;
@@ -82,7 +115,8 @@ class BranchWatch {
   const Eigen::VectorXd& reference_;
   const ReferenceMobilityOptions& o_;
   MobilityBranch& b_;
-  Eigen::VectorXd previous_;
+  Eigen::VectorXd previous_;    // per-edge angles of the last accepted point
+  Eigen::VectorXd previous_x_;  // its unknowns
 };
 
 }  // namespace

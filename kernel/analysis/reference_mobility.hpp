@@ -11,7 +11,8 @@
 //     DOF > 1: projected driving, both ways: the crease with the largest component in the
 //     first null vector is stepped by `driven_step` and the rest Newton-projected
 //     (minimum-norm) from the previous point.
-//     A branch stops at a fold limit (some crease reaching +-fold_limit: local interference),
+//     A branch stops at a fold limit (some crease reaching +-fold_limit: local interference;
+//     the end point is then solved exactly with the first crease to cross held at +-pi),
 //     at a sign switch against a letter (when use_assignment), when faces cross (global
 //     interference, facet_interference.hpp, checked at every point), when the path returns
 //     to x0 (a closed loop of motion), when continuation fails, or at max_points.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "data/generators/miura.hpp"
+#include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "tests/support/run_command.hpp"
@@ -314,6 +315,49 @@ TEST(TraceCli, FullyFoldedMarksInterference) {
   int switches = 0;
   for (const auto& e : k["events"]) switches += e["kind"] == "mv_switch" && e["step"] == 1;
   EXPECT_GT(switches, 0);
+}
+
+}  // namespace
+}  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// A sheet with a hole: both branches through the Miura tube's given state, the flat-folded
+// end solved exactly at 180 deg, the given state as the first CSV row.
+TEST(TraceCli, MiuraTubeBothWaysFromItsGivenState) {
+  TempDir dir;
+  const std::string in = dir.file("tube.fold"), csv = dir.file("t.csv");
+  generators::MiuraTubeParams tp;
+  tp.rows = 3;
+  write_fold(generators::miura_tube(tp), in);
+  const auto j = run_json(in + " --branch all --csv " + csv);
+  ASSERT_FALSE(j.is_null());
+  EXPECT_NE(j["model"].get<std::string>().find("SE(3) hole closures"), std::string::npos);
+  ASSERT_EQ(j["branches"].size(), 2u);
+  EXPECT_LE(j["max_residual"].get<double>(), 1e-11);
+  double largest_end = 0;
+  for (const auto& b : j["branches"]) {
+    EXPECT_EQ(b["traced"], true);
+    EXPECT_EQ(b["stopped_by"], "fold limit");
+    largest_end = std::max(largest_end, std::abs(b["reached_deg"].get<double>()));
+  }
+  // The flat-folded end is solved with the first crease to reach the limit held at 180 deg;
+  // the end is a singular point, so the other creases are there only to ~1e-6 rad.
+  EXPECT_NEAR(largest_end, 180.0, 1e-3);
+  const Csv c = read_csv(dir.file("t.b0.csv"));
+  ASSERT_GE(c.rows.size(), 10u);
+  double last_max = 0;
+  for (std::size_t i = 0; i < c.header.size(); ++i)
+    if (c.header[i].size() > 5 && c.header[i][0] == 'e' && std::isdigit(static_cast<unsigned char>(c.header[i][1])))
+      last_max = std::max(last_max, std::abs(std::stod(c.rows.back()[i])));
+  EXPECT_NEAR(last_max, 180.0, 1e-9);
+  const int drive = j["branches"][0]["drive_edge"].get<int>();
+  const int col = c.column("e" + std::to_string(drive) + "_deg");
+  ASSERT_GE(col, 0);
+  // The first row is the given (folded) state, not the flat sheet.
+  EXPECT_GT(std::abs(std::stod(c.rows[0][col])), 10.0);
+  EXPECT_LT(std::abs(std::stod(c.rows[0][col])), 170.0);
 }
 
 }  // namespace
