@@ -9,7 +9,8 @@ One panel per CSV: the fold angle of every crease (deg) against the driving angl
 Creases whose curves coincide (to 1e-9 deg) are drawn once and labelled together; creases
 that never fold are left out unless --all-edges. Events from the `events` column are marked
 on the curve of their crease: M/V switch (circle) and interference, a crease reaching
-+-180 deg (cross). The flat state (0, 0) starts every curve.
++-180 deg (cross). The flat state (0, 0) starts every curve, unless --from-given-state (traces
+of sheets with holes start at the file's own folded state, their first row).
 
 CSV columns (as written by rigidfold trace):
     step,drive_deg,max_residual_rad,mismatch,events,e0_deg,e1_deg,...
@@ -76,15 +77,19 @@ def label_of(edges):
     return f"e{edges[0]}, e{edges[1]}, ... ({len(edges)} creases)"
 
 
-def plot(paths, out, edges_filter, title, all_edges):
+def plot(paths, out, edges_filter, title, all_edges, flat_start=True):
     fig, axes = plt.subplots(1, len(paths), figsize=(6.2 * len(paths), 4.8), squeeze=False, sharey=True)
     for ax, path in zip(axes[0], paths):
         tr = read_trace(path)
         chosen = [e for e in tr["edges"] if edges_filter is None or e in edges_filter]
         groups = group_curves(tr, chosen, all_edges)
-        x = [0.0] + tr["drive"]
+        start = [0.0] if flat_start else []
+        x = start + tr["drive"]
         for edges, vals in groups:
-            ax.plot(x, [0.0] + vals, lw=1.4, label=label_of(edges))
+            ax.plot(x, start + vals, lw=1.4, label=label_of(edges))
+        if not flat_start and tr["drive"]:
+            ax.plot(tr["drive"][0], 0, "|", color="0.3", ms=0)  # keeps the axes; the start is the first row
+            ax.axvline(tr["drive"][0], color="0.5", lw=0.8, ls=":", label="given state")
         switch_done, hit_done = False, False
         for k, evs in enumerate(tr["events"]):
             for ev in evs:
@@ -127,6 +132,8 @@ def main(argv=None):
     ap.add_argument("--edges", help="comma-separated crease indices to plot (default: every crease that folds)")
     ap.add_argument("--title", default="", help="figure title")
     ap.add_argument("--all-edges", action="store_true", help="also draw creases that stay flat")
+    ap.add_argument("--from-given-state", action="store_true",
+                    help="the trace starts at the pattern's given (folded) state, e.g. a tube: no flat start")
     args = ap.parse_args(argv)
     edges = None
     if args.edges:
@@ -136,7 +143,7 @@ def main(argv=None):
             print(f"plot_branches.py: error: --edges: '{args.edges}' is not a list of integers", file=sys.stderr)
             return 2
     try:
-        plot(args.csv, args.out, edges, args.title, args.all_edges)
+        plot(args.csv, args.out, edges, args.title, args.all_edges, flat_start=not args.from_given_state)
     except (OSError, ValueError) as e:
         print(f"plot_branches.py: error: {e}", file=sys.stderr)
         return 2

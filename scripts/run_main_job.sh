@@ -19,6 +19,12 @@ done
 for csv in "${csvs[@]}"; do
   /usr/bin/python3 python/plot_branches.py "$csv" --out "out/report/figures/$(basename "$csv" .csv)_branches.png" >/dev/null
 done
+# The bundled tube (a sheet with a hole): both branches through its given 3D state.
+./build/app/rigidfold trace data/bundled/miura_tube_6_alpha60.fold --branch all \
+  --csv out/report/traces/miura_tube_6_alpha60.csv >/dev/null
+/usr/bin/python3 python/plot_branches.py out/report/traces/miura_tube_6_alpha60.b0.csv \
+  out/report/traces/miura_tube_6_alpha60.b1.csv --from-given-state --title "Miura tube, both ways from its given state" \
+  --out out/report/figures/miura_tube_6_alpha60_branches.png >/dev/null
 # Branch diagrams of the modified square twists (seed 001 Figs. 8, 10): every branch through
 # the flat state and the located bifurcations; creases b2 (diagonal, 12), b3 (1), b4 (7),
 # b5 (6) against b1 (side AB, 0).
