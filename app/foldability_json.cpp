@@ -31,6 +31,25 @@ Json obstruction_json(const Obstruction& o) {
   return j;
 }
 
+// The keys every traced branch reports, from the branch explorer (BranchTrace) or from a
+// sheet's given state (MobilityBranch): both carry these fields under the same names.
+template <class TracedBranch>
+void add_traced_branch_keys(Json& jb, const TracedBranch& b, bool ignore_assignment) {
+  jb["signs_match_assignment"] = ignore_assignment ? Json(nullptr) : Json(b.signs_match_assignment);
+  if (!b.signs_match_assignment && b.first_wrong_crease >= 0) jb["first_crease_against_assignment"] = b.first_wrong_crease;
+  jb["driving_crease"] = b.driving_edge;
+  jb["range_deg"] = {b.driving_begin * kDeg, b.driving_end * kDeg};
+  jb["max_fold_deg"] = b.max_fold * kDeg;
+  jb["stopped_by"] = b.stopped_by;
+  if (b.stop_crease >= 0) jb["stop_crease"] = b.stop_crease;
+  jb["max_residual"] = b.max_residual;
+  jb["points"] = b.path.size();
+  Json sw = Json::array();
+  for (const SignSwitch& s : b.sign_switches)
+    sw.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
+  jb["mv_switches"] = sw;
+}
+
 // The general loop-closure solver's verdict: a traced branch from near flat (yes), or the
 // least residual reached at a small fold (no: numerical evidence, not a proof).
 Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, const std::string& why_general) {
@@ -63,19 +82,7 @@ Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignm
       jb["from_point"] = b.from_point;
       jb["to_point"] = b.to_point >= 0 ? Json(b.to_point) : Json(nullptr);
       jb["dof"] = b.dof_at_departure;
-      jb["signs_match_assignment"] = ignore_assignment ? Json(nullptr) : Json(b.signs_match_assignment);
-      if (!b.signs_match_assignment && b.first_wrong_crease >= 0) jb["first_crease_against_assignment"] = b.first_wrong_crease;
-      jb["driving_crease"] = b.driving_edge;
-      jb["range_deg"] = {b.driving_begin * kDeg, b.driving_end * kDeg};
-      jb["max_fold_deg"] = b.max_fold * kDeg;
-      jb["stopped_by"] = b.stopped_by;
-      if (b.stop_crease >= 0) jb["stop_crease"] = b.stop_crease;
-      jb["max_residual"] = b.max_residual;
-      jb["points"] = b.path.size();
-      Json sw = Json::array();
-      for (const SignSwitch& s : b.sign_switches)
-        sw.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
-      jb["mv_switches"] = sw;
+      add_traced_branch_keys(jb, b, ignore_assignment);
       jb["global_interference"] =
           b.global_interference_index < 0
               ? Json(nullptr)
@@ -198,20 +205,8 @@ Json mobility_json(const CreasePattern& p, const Topology& t, bool ignore_assign
     jb["from_point"] = "given state";
     jb["sense"] = b.sense;
     jb["dof"] = m.dof;
-    jb["signs_match_assignment"] = ignore_assignment ? Json(nullptr) : Json(b.signs_match_assignment);
-    if (!b.signs_match_assignment && b.first_wrong_crease >= 0) jb["first_crease_against_assignment"] = b.first_wrong_crease;
-    jb["driving_crease"] = b.driving_edge;
-    jb["range_deg"] = {b.driving_begin * kDeg, b.driving_end * kDeg};
-    jb["max_fold_deg"] = b.max_fold * kDeg;
-    jb["stopped_by"] = b.stopped_by;
-    if (b.stop_crease >= 0) jb["stop_crease"] = b.stop_crease;
-    jb["max_residual"] = b.max_residual;
-    jb["points"] = b.path.size();
+    add_traced_branch_keys(jb, b, ignore_assignment);
     jb["valid_points"] = b.valid_points;
-    Json sw = Json::array();
-    for (const SignSwitch& s : b.sign_switches)
-      sw.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
-    jb["mv_switches"] = sw;
     jb["global_interference"] =
         b.interfering_faces.first < 0 ? Json(nullptr)
                                       : Json({{"faces", {b.interfering_faces.first, b.interfering_faces.second}}});

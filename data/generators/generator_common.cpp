@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/topology.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold::generators {
@@ -45,6 +47,28 @@ CreasePattern finish_pattern(CreasePattern p, const std::string& title, const st
   p.extra["frame_attributes"] = nlohmann::ordered_json::array({"2D"});
   p.extra["rigidfold:generator"] = generator_parameters;
   complete_and_validate(p, title);
+  return p;
+}
+
+CreasePattern finish_folded_pattern(CreasePattern p, const std::string& title, const std::string& frame_title,
+                                    const nlohmann::ordered_json& generator_parameters) {
+  p.coords_2d = false;
+  p.fold_angles.assign(p.edges.size(), std::nullopt);
+  p.extra["file_spec"] = 1.1;
+  p.extra["file_creator"] = "rigidfold generate";
+  p.extra["file_title"] = title;
+  p.extra["file_classes"] = nlohmann::ordered_json::array({"singleModel"});
+  p.extra["frame_title"] = frame_title;
+  p.extra["frame_classes"] = nlohmann::ordered_json::array({"foldedForm"});
+  p.extra["frame_attributes"] = nlohmann::ordered_json::array({"3D"});
+  p.extra["rigidfold:generator"] = generator_parameters;
+  complete_and_validate(p, title);
+  const Eigen::VectorXd rho = reference_fold_angles(p, build_topology(p, title));
+  for (int e = 0; e < p.num_edges(); ++e) {
+    if (p.assignments[e] == Assignment::Boundary) continue;
+    p.assignments[e] = rho[e] >= 0 ? Assignment::Valley : Assignment::Mountain;
+    p.fold_angles[e] = rho[e];
+  }
   return p;
 }
 

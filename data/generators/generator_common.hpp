@@ -29,6 +29,13 @@ std::string assignment_letters(const std::vector<Assignment>& assignment);
 CreasePattern finish_pattern(CreasePattern pattern, const std::string& title, const std::string& frame_title,
                              const nlohmann::ordered_json& generator_parameters);
 
+// The same for a pattern given directly in 3D (tubes): frame_classes "foldedForm",
+// frame_attributes "3D", coords_2d false; after validation every crease that is not B
+// gets its reference fold angle (reference_fold_angles) as edges_foldAngle and the letter V
+// where that angle is >= 0, M otherwise.
+CreasePattern finish_folded_pattern(CreasePattern pattern, const std::string& title, const std::string& frame_title,
+                                    const nlohmann::ordered_json& generator_parameters);
+
 // Degrees <-> radians.
 double deg(double radians);
 double rad(double degrees);

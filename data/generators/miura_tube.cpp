@@ -8,9 +8,7 @@
 #include "data/generators/generator_common.hpp"
 #include "data/generators/miura.hpp"
 #include "kernel/geometry/face_placement.hpp"
-#include "kernel/geometry/fold_angles.hpp"
 #include "kernel/pattern/topology.hpp"
-#include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold::generators {
 namespace {
@@ -62,7 +60,6 @@ CreasePattern miura_tube(const MiuraTubeParams& params) {
         throw std::logic_error("miura_tube: zig-zag lines 0 and 2 of the folded strip are not coplanar");
 
   CreasePattern p;
-  p.coords_2d = false;
   p.vertices = folded.vertices;
   for (int j = 0; j <= R; ++j) {
     const Eigen::Vector3d q = folded.vertices[a_vertex(1, j)];
@@ -90,24 +87,13 @@ CreasePattern miura_tube(const MiuraTubeParams& params) {
       if (v % 3 == 1 && v < 3 * (R + 1)) v = b_vertex(v / 3);
     p.faces.push_back(g);
   }
-  p.fold_angles.assign(p.edges.size(), std::nullopt);
-  p.extra["file_spec"] = 1.1;
-  p.extra["file_creator"] = "rigidfold generate";
-  p.extra["file_title"] = "Miura tube";
-  p.extra["file_classes"] = nlohmann::ordered_json::array({"singleModel"});
-  p.extra["frame_title"] = "Miura tube, " + std::to_string(R) + " cells";
-  p.extra["frame_classes"] = nlohmann::ordered_json::array({"foldedForm"});
-  p.extra["frame_attributes"] = nlohmann::ordered_json::array({"3D"});
-  p.extra["rigidfold:generator"] = {{"type", "miura_tube"},       {"rows", R},        {"alpha_deg", deg_rounded(params.alpha)},
-                                    {"a", params.a},              {"b", params.b},    {"fold_deg", deg_rounded(params.fold)}};
-  complete_and_validate(p, "Miura tube");
-  const Eigen::VectorXd ref = reference_fold_angles(p, build_topology(p, "Miura tube"));
-  for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.assignments[e] == Assignment::Boundary) continue;
-    p.assignments[e] = ref[e] >= 0 ? Assignment::Valley : Assignment::Mountain;
-    p.fold_angles[e] = ref[e];
-  }
-  return p;
+  return finish_folded_pattern(std::move(p), "Miura tube", "Miura tube, " + std::to_string(R) + " cells",
+                               {{"type", "miura_tube"},
+                                {"rows", R},
+                                {"alpha_deg", deg_rounded(params.alpha)},
+                                {"a", params.a},
+                                {"b", params.b},
+                                {"fold_deg", deg_rounded(params.fold)}});
 }
 
 }  // namespace rigidfold::generators

@@ -4,9 +4,6 @@
 #include <numbers>
 
 #include "data/generators/generator_common.hpp"
-#include "kernel/geometry/fold_angles.hpp"
-#include "kernel/pattern/topology.hpp"
-#include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold::generators {
 
@@ -32,7 +29,6 @@ CreasePattern prism_tube(const TubeParams& params) {
   require(std::isfinite(params.top_scale) && params.top_scale > 0, "top_scale", "must be positive");
   const int L = params.layers;
   CreasePattern p;
-  p.coords_2d = false;
   for (int l = 0; l <= L; ++l) {
     const double s = 1.0 + (params.top_scale - 1.0) * l / L;
     for (int k = 0; k < n; ++k)
@@ -51,24 +47,9 @@ CreasePattern prism_tube(const TubeParams& params) {
     }
   for (int l = 0; l < L; ++l)
     for (int k = 0; k < n; ++k) p.faces.push_back({vid(k, l), vid(k + 1, l), vid(k + 1, l + 1), vid(k, l + 1)});
-  p.fold_angles.assign(p.edges.size(), std::nullopt);
-  p.extra["file_spec"] = 1.1;
-  p.extra["file_creator"] = "rigidfold generate";
-  p.extra["file_title"] = "prism tube";
-  p.extra["file_classes"] = nlohmann::ordered_json::array({"singleModel"});
-  p.extra["frame_title"] = std::to_string(n) + "-panel prism tube";
-  p.extra["frame_classes"] = nlohmann::ordered_json::array({"foldedForm"});
-  p.extra["frame_attributes"] = nlohmann::ordered_json::array({"3D"});
-  p.extra["rigidfold:generator"] = {{"type", "prism_tube"}, {"panels", n}, {"height", params.height},
-                                    {"layers", L}, {"top_scale", params.top_scale}};
-  complete_and_validate(p, "prism tube");
-  const Eigen::VectorXd rho = reference_fold_angles(p, build_topology(p, "prism tube"));
-  for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.assignments[e] == Assignment::Boundary) continue;
-    p.assignments[e] = rho[e] >= 0 ? Assignment::Valley : Assignment::Mountain;
-    p.fold_angles[e] = rho[e];
-  }
-  return p;
+  return finish_folded_pattern(std::move(p), "prism tube", std::to_string(n) + "-panel prism tube",
+                               {{"type", "prism_tube"}, {"panels", n}, {"height", params.height}, {"layers", L},
+                                {"top_scale", params.top_scale}});
 }
 
 }  // namespace rigidfold::generators
