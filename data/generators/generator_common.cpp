@@ -35,34 +35,35 @@ std::string assignment_letters(const std::vector<Assignment>& assignment) {
   return s;
 }
 
-CreasePattern finish_pattern(CreasePattern p, const std::string& title, const std::string& frame_title,
-                             const nlohmann::ordered_json& generator_parameters) {
-  p.coords_2d = true;
+namespace {
+
+// FOLD metadata of a generated pattern, then validation.
+void stamp_and_validate(CreasePattern& p, const std::string& title, const std::string& frame_title, bool folded_3d,
+                        const nlohmann::ordered_json& generator_parameters) {
+  p.coords_2d = !folded_3d;
   p.extra["file_spec"] = 1.1;
   p.extra["file_creator"] = "rigidfold generate";
   p.extra["file_title"] = title;
   p.extra["file_classes"] = nlohmann::ordered_json::array({"singleModel"});
   p.extra["frame_title"] = frame_title;
-  p.extra["frame_classes"] = nlohmann::ordered_json::array({"creasePattern"});
-  p.extra["frame_attributes"] = nlohmann::ordered_json::array({"2D"});
+  p.extra["frame_classes"] = nlohmann::ordered_json::array({folded_3d ? "foldedForm" : "creasePattern"});
+  p.extra["frame_attributes"] = nlohmann::ordered_json::array({folded_3d ? "3D" : "2D"});
   p.extra["rigidfold:generator"] = generator_parameters;
   complete_and_validate(p, title);
+}
+
+}  // namespace
+
+CreasePattern finish_pattern(CreasePattern p, const std::string& title, const std::string& frame_title,
+                             const nlohmann::ordered_json& generator_parameters) {
+  stamp_and_validate(p, title, frame_title, false, generator_parameters);
   return p;
 }
 
 CreasePattern finish_folded_pattern(CreasePattern p, const std::string& title, const std::string& frame_title,
                                     const nlohmann::ordered_json& generator_parameters) {
-  p.coords_2d = false;
   p.fold_angles.assign(p.edges.size(), std::nullopt);
-  p.extra["file_spec"] = 1.1;
-  p.extra["file_creator"] = "rigidfold generate";
-  p.extra["file_title"] = title;
-  p.extra["file_classes"] = nlohmann::ordered_json::array({"singleModel"});
-  p.extra["frame_title"] = frame_title;
-  p.extra["frame_classes"] = nlohmann::ordered_json::array({"foldedForm"});
-  p.extra["frame_attributes"] = nlohmann::ordered_json::array({"3D"});
-  p.extra["rigidfold:generator"] = generator_parameters;
-  complete_and_validate(p, title);
+  stamp_and_validate(p, title, frame_title, true, generator_parameters);
   const Eigen::VectorXd rho = reference_fold_angles(p, build_topology(p, title));
   for (int e = 0; e < p.num_edges(); ++e) {
     if (p.assignments[e] == Assignment::Boundary) continue;
