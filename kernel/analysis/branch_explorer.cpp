@@ -12,6 +12,7 @@
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/bifurcation.hpp"
+#include "kernel/solve/bordered_determinant.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/rank.hpp"
 
@@ -19,44 +20,6 @@ namespace rigidfold {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Bordered-determinant monitor along a DOF-1 branch.
-struct Monitor {
-  Eigen::MatrixXd U;  // n-1 leading left singular vectors at the previous point
-  Eigen::VectorXd t;  // unit tangent there, oriented along the travel
-  Eigen::MatrixXd J;  // Jacobian there
-  bool ready = false;
-  static double det(const Eigen::MatrixXd& U, const Eigen::MatrixXd& J, const Eigen::VectorXd& t) {
-    const int n = static_cast<int>(J.cols());
-    Eigen::MatrixXd B(n, n);
-    B.topRows(n - 1) = U.transpose() * J;
-    B.row(n - 1) = t.transpose();
-    return B.determinant();
-  }
-  // Moves to x (travel direction `along`); true if the determinant changed sign.
-  bool step(const ClosureSystem& sys, const Eigen::VectorXd& x, const Eigen::VectorXd& along) {
-    const Eigen::MatrixXd Jx = dense_jacobian(sys, x);
-    const int n = static_cast<int>(Jx.cols());
-    if (Jx.rows() < n - 1) {  // fewer rows than a DOF-1 path needs: no bordered determinant
-      ready = false;
-      return false;
-    }
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jx, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Eigen::VectorXd tx = svd.matrixV().col(n - 1);
-    if (tx.dot(along) < 0) tx = -tx;
-    bool changed = false;
-    if (ready) {
-      Eigen::VectorXd tt = tx;
-      if (tt.dot(t) < 0) tt = -tt;
-      changed = (det(U, J, t) > 0) != (det(U, Jx, tt) > 0);
-    }
-    U = svd.matrixU().leftCols(n - 1);
-    t = tx;
-    J = Jx;
-    ready = true;
-    return changed;
-  }
-};
 
 struct Departure {
   int point;
@@ -173,16 +136,16 @@ BranchExploration explore_branches(const CreasePattern& pattern, const Topology&
       br.max_fold = std::max(br.max_fold, rho.cwiseAbs().maxCoeff());
     };
     record(xs);
-    Monitor monitor;
+    BorderedDeterminantMonitor monitor;
     Eigen::VectorXd prev_x = xs, along = dep.direction;
-    monitor.step(sys, leave.x, along);
+    monitor.step(dense_jacobian(sys, leave.x), along);
     int stop_kind = 0;  // 1 bifurcation, 2 fold limit, 3 known point
     Eigen::VectorXd bif_a, bif_b;
     auto accept = [&](const Eigen::VectorXd& x) {
       if ((x - prev_x).norm() > 0) along = (x - prev_x).normalized();
       record(x);
       const Eigen::VectorXd& rho = br.path.back();
-      if (br.path.size() > 2 && monitor.step(sys, x, along)) {
+      if (br.path.size() > 2 && monitor.step(dense_jacobian(sys, x), along).sign_changed) {
         stop_kind = 1;
         bif_a = prev_x;
         bif_b = x;

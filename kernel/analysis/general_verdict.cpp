@@ -12,6 +12,7 @@
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/newton_projection.hpp"
+#include "kernel/solve/bordered_determinant.hpp"
 #include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
@@ -63,59 +64,6 @@ std::vector<int> driving_creases(const ClosureSystem& sys, const Topology& t, in
   return out;
 }
 
-// Bordered-determinant test for DOF-1 traces. Between consecutive points x0, x1 the rows
-// S (n-1 of them) are chosen at x0 by column-pivoted QR of J(x0)^T, and
-//   d_i = det [J_S(x_i); t_i^T]   (t_1 oriented along t_0)
-// is compared: a sign change means the Jacobian lost rank in between (a candidate
-// bifurcation). Choosing S afresh at each step keeps it well conditioned, so a sign change
-// is not an artefact of the row choice.
-struct Bordered {
-  bool active = false;
-  Eigen::MatrixXd J_prev;
-  Eigen::VectorXd t_prev;
-  static bool tangent(const ClosureSystem& sys, const Eigen::VectorXd& x, Eigen::MatrixXd& Jd, Eigen::VectorXd& t) {
-    Eigen::VectorXd r;
-    Eigen::SparseMatrix<double> J;
-    sys.evaluate(x, r, J);
-    const RankResult rk = jacobian_rank(J);
-    if (rk.dof != 1) return false;
-    Jd = Eigen::MatrixXd(J);
-    t = rk.null_space.col(0);
-    return true;
-  }
-  bool init(const ClosureSystem& sys, const Eigen::VectorXd& x, const Eigen::VectorXd& direction) {
-    if (!tangent(sys, x, J_prev, t_prev)) return false;
-    if (t_prev.dot(direction) < 0) t_prev = -t_prev;
-    active = true;
-    return true;
-  }
-  static double det(const Eigen::MatrixXd& Jd, const std::vector<int>& rows, const Eigen::VectorXd& t) {
-    const int n = static_cast<int>(Jd.cols());
-    Eigen::MatrixXd B(n, n);
-    for (int i = 0; i < n - 1; ++i) B.row(i) = Jd.row(rows[i]);
-    B.row(n - 1) = t.transpose();
-    return Eigen::PartialPivLU<Eigen::MatrixXd>(B).determinant();
-  }
-  // Moves to x. Returns 1 if the determinant changed sign (fraction f of the way, by
-  // linear interpolation), 0 if not, -1 if the DOF at x is not 1.
-  int step(const ClosureSystem& sys, const Eigen::VectorXd& x, double& f) {
-    Eigen::MatrixXd Jd;
-    Eigen::VectorXd t;
-    if (!tangent(sys, x, Jd, t)) return -1;
-    if (t.dot(t_prev) < 0) t = -t;
-    const int n = static_cast<int>(Jd.cols());
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J_prev.transpose());
-    const auto& perm = qr.colsPermutation().indices();
-    std::vector<int> rows(perm.data(), perm.data() + (n - 1));
-    const double d0 = det(J_prev, rows, t_prev), d1 = det(Jd, rows, t);
-    J_prev = std::move(Jd);
-    t_prev = t;
-    if ((d0 > 0) == (d1 > 0)) return 0;
-    f = d0 / (d0 - d1);
-    return 1;
-  }
-};
-
 struct Tracer {
   const ClosureSystem& sys;
   const std::vector<int>& sign;
@@ -125,8 +73,18 @@ struct Tracer {
   Eigen::VectorXd start_rho;
   Eigen::VectorXd prev_rho;
   std::vector<bool> switched;
-  Bordered bordered;
+  // Bordered-determinant test for DOF-1 traces (bordered_determinant.hpp): a sign change
+  // between consecutive points means the Jacobian lost rank in between (a candidate
+  // bifurcation); a point where the DOF is not 1 is itself singular.
+  BorderedDeterminantMonitor bordered;
+  bool bordered_active = false;
+  Eigen::VectorXd prev_x;
   int valid_points = 0;  // points of out.path with every letter respected
+
+  void start_bordered(const Eigen::VectorXd& x, const Eigen::VectorXd& direction) {
+    bordered_active = bordered.step(dense_jacobian(sys, x), direction).applicable;
+    prev_x = x;
+  }
 
   // Records the accepted point x; returns true to stop.
   bool accept(const Eigen::VectorXd& x) {
@@ -168,13 +126,13 @@ struct Tracer {
       stop = true;
       if (std::abs(rho[big]) > std::numbers::pi) invalid = true;  // past 180 deg: faces pass through each other
     }
-    if (bordered.active && out.path.size() > 1) {
-      double f = 0;
-      const int st = bordered.step(sys, x, f);
-      if (st != 0) {
-        // -1: the DOF jumped at an accepted point (a singular point right here).
+    if (bordered_active && out.path.size() > 1) {
+      const BorderedDeterminantMonitor::Step st = bordered.step(dense_jacobian(sys, x), x - prev_x);
+      prev_x = x;
+      if (!st.applicable || st.sign_changed) {
+        // Not applicable: the DOF jumped at an accepted point (a singular point right here).
         SingularPoint sp;
-        sp.angles = st < 0 ? rho : Eigen::VectorXd(prev_rho + f * (rho - prev_rho));
+        sp.angles = !st.applicable ? rho : Eigen::VectorXd(prev_rho + st.fraction * (rho - prev_rho));
         sp.driving_value = sp.angles[driving_edge];
         sp.max_fold = sp.angles.cwiseAbs().maxCoeff();
         out.singular_points.push_back(sp);
@@ -301,9 +259,9 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     sys.evaluate(cand.x, r, J);
     const RankResult rk = jacobian_rank(J);
     trial.dof = rk.dof;
-    Tracer tr{sys, sign, opt, cand.edge, trial, {}, {}, {}, {}, 0};
+    Tracer tr{sys, sign, opt, cand.edge, trial, {}, {}, {}, BorderedDeterminantMonitor(), false, {}, 0};
     if (rk.dof == 1) {
-      if (n <= opt.singular_detection_limit) tr.bordered.init(sys, cand.x, cand.x);
+      if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
       const ContinuationResult cr =
           continue_one_dof(sys, cand.x, cand.x, [&](const Eigen::VectorXd& x) { return tr.accept(x); },
                            opt.continuation);

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCore>
 #include <cmath>
 
+#include "kernel/solve/bordered_determinant.hpp"
 #include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold {
@@ -23,10 +24,7 @@ LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Ei
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     Eigen::VectorXd t = svd.matrixV().col(n - 1);
     if (t.dot(ta) < 0) t = -t;
-    Eigen::MatrixXd B(n, n);
-    B.topRows(n - 1) = Ua.transpose() * J;
-    B.row(n - 1) = t.transpose();
-    return B.determinant();
+    return bordered_determinant(Ua, J, t);
   };
   const double ga = bordered(xa), gb = bordered(xb);
   if (!(ga * gb < 0)) return out;
