@@ -13,22 +13,11 @@
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/bordered_determinant.hpp"
+#include "kernel/solve/portable_random.hpp"
 #include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
 namespace {
-
-// splitmix64: a small generator whose stream is the same on every platform.
-struct SplitMix {
-  std::uint64_t s;
-  std::uint64_t next() {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-};
 
 double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
@@ -182,7 +171,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   std::vector<Candidate> candidates;
   double least = std::numeric_limits<double>::infinity();
   Eigen::VectorXd least_x;
-  SplitMix rng{opt.seed};
+  SplitMix64 rng{opt.seed};
   const std::vector<int> drivers = driving_creases(sys, topology, opt.max_driving_creases);
   for (int e : drivers) {
     const int k = sys.unknown_of_edge(e);

@@ -6,23 +6,18 @@
 #include <cmath>
 
 #include "kernel/closure/closure_second_order.hpp"
+#include "kernel/solve/portable_random.hpp"
 
 namespace rigidfold {
 namespace {
 
-// splitmix64 + Box-Muller: the same starts on every platform.
+// Random unit vectors from a portable stream (Box-Muller): the same starts on every platform.
 struct Starts {
-  std::uint64_t s;
-  double uniform() {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return (static_cast<double>(z >> 11) + 0.5) * 0x1.0p-53;
-  }
+  SplitMix64 stream;
   Eigen::VectorXd unit(int k) {
     Eigen::VectorXd c(k);
-    for (int i = 0; i < k; ++i) c[i] = std::sqrt(-2 * std::log(uniform())) * std::cos(6.283185307179586 * uniform());
+    for (int i = 0; i < k; ++i)
+      c[i] = std::sqrt(-2 * std::log(stream.open_uniform())) * std::cos(6.283185307179586 * stream.open_uniform());
     return c.normalized();
   }
 };
