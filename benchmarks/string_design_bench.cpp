@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "design/strings/miura_string.hpp"
 #include "design/strings/string_fit_ceres.hpp"
@@ -19,18 +18,7 @@ namespace {
 using namespace rigidfold::design;
 constexpr double kDeg = std::numbers::pi / 180;
 
-MiuraString random_string(int n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> alpha(30 * kDeg, 65 * kDeg), len(0.8, 1.2);
-  MiuraString s;
-  for (int i = 0; i < n; ++i) {
-    s.alpha1.push_back(alpha(rng));
-    s.alpha2.push_back(alpha(rng));
-  }
-  for (int k = 0; k <= n; ++k) s.lengths.push_back(len(rng));
-  s.width = 0.5 * max_string_width(s);
-  return s;
-}
+MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, 30 * kDeg, 65 * kDeg, 0.5); }
 
 std::vector<Eigen::Vector3d> helix(int n) {
   std::vector<Eigen::Vector3d> p;

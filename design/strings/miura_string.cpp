@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "kernel/pattern/validate_pattern.hpp"
+#include "kernel/solve/portable_random.hpp"
 
 namespace rigidfold::design {
 
@@ -160,6 +161,18 @@ std::string string_pattern_svg(const CreasePattern& pattern, double scale) {
   }
   out << "</svg>\n";
   return out.str();
+}
+
+MiuraString random_miura_string(int n, std::uint64_t seed, double alpha_min, double alpha_max, double width_fraction) {
+  SplitMix64 stream{seed};
+  MiuraString s;
+  for (int i = 0; i < n; ++i) {
+    s.alpha1.push_back(alpha_min + (alpha_max - alpha_min) * stream.uniform());
+    s.alpha2.push_back(alpha_min + (alpha_max - alpha_min) * stream.uniform());
+  }
+  for (int k = 0; k <= n; ++k) s.lengths.push_back(0.8 + 0.4 * stream.uniform());
+  s.width = width_fraction * max_string_width(s);
+  return s;
 }
 
 }  // namespace rigidfold::design

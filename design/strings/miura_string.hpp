@@ -22,6 +22,7 @@
 //             N+1..2N+1. Face 0 (top lead-in) is the root that face placement holds fixed.
 //   Assignments M/V from the signs of the given fold angles (V where the angle is >= 0).
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,12 @@ void validate_string(const MiuraString& s, bool check_width = true);
 // The largest strip width for which the peripheral creases of `s` do not cross or leave
 // the strip (the pattern is valid for any width strictly below it).
 double max_string_width(const MiuraString& s);
+
+// A random string for tests and benchmarks: n vertices with alpha1, alpha2 uniform in
+// [alpha_min, alpha_max] (radians, inside (0, pi/2)), segment lengths uniform in [0.8, 1.2],
+// width = width_fraction * max_string_width (width_fraction in (0, 1)). The same seed gives
+// the same string on every platform (a portable stream, not std distributions).
+MiuraString random_miura_string(int n, std::uint64_t seed, double alpha_min, double alpha_max, double width_fraction);
 
 // Flat crease pattern (numbering above). edge_fold_angles: one per edge (radians) to
 // store as edges_foldAngle and to take the M/V assignment from; empty = all valley,

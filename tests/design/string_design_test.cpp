@@ -19,16 +19,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180;
 
 MiuraString random_string(int n, std::uint64_t seed, double lo_deg = 30, double hi_deg = 70) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> alpha(lo_deg * kDeg, hi_deg * kDeg), len(0.8, 1.2);
-  MiuraString s;
-  for (int i = 0; i < n; ++i) {
-    s.alpha1.push_back(alpha(rng));
-    s.alpha2.push_back(alpha(rng));
-  }
-  for (int k = 0; k <= n; ++k) s.lengths.push_back(len(rng));
-  s.width = 0.5 * max_string_width(s);
-  return s;
+  return random_miura_string(n, seed, lo_deg * kDeg, hi_deg * kDeg, 0.5);
 }
 
 std::vector<Eigen::Vector3d> helix(double radius, double rise, double step_deg, int count) {

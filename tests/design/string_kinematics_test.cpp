@@ -19,18 +19,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-MiuraString random_string(int n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> alpha(35 * kDeg, 75 * kDeg), len(0.8, 1.2);
-  MiuraString s;
-  for (int i = 0; i < n; ++i) {
-    s.alpha1.push_back(alpha(rng));
-    s.alpha2.push_back(alpha(rng));
-  }
-  for (int k = 0; k <= n; ++k) s.lengths.push_back(len(rng));
-  s.width = 0.9 * max_string_width(s);
-  return s;
-}
+MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, 35 * kDeg, 75 * kDeg, 0.9); }
 
 double min_limit(const MiuraString& s) {
   double m = 10;
