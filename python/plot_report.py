@@ -32,6 +32,8 @@ def draw_crease_pattern(ax, fold, title):
     spans = [max(c[k] for c in coords) - min(c[k] for c in coords) for k in range(3)]
     k0, k1 = sorted(sorted(range(3), key=lambda k: -spans[k])[:2])
     xy = [(c[k0], c[k1]) for c in coords]
+    if min(spans) > 1e-9 * max(spans):  # a pattern given in 3D (e.g. a tube): say it is a projection
+        title += f"\n(given in 3D; projected on the {'xyz'[k0]}{'xyz'[k1]}-plane)"
     assignment = fold.get("edges_assignment", ["U"] * len(fold["edges_vertices"]))
     for (a, b), letter in zip(fold["edges_vertices"], assignment):
         style = "--" if letter == "M" else "-"
