@@ -56,7 +56,8 @@ TEST(GeneratorCli, WritesEveryKindAndBundle) {
         "square-twist --twist-deg 20 --type 4", "square-twist --type 2M",
         "square-twist --assignment MMMMMVMVMVMVV --diagonal BD", "waterbomb --n 6 --corners V",
         "corrugated-p --alpha-deg 120 --beta-deg 80", "corrugated-q --odd 3434",
-        "corrugated-p --assignment 'MVVM MV VV VM MM'"}) {
+        "corrugated-p --assignment 'MVVM MV VV VM MM'", "miura-tube --rows 3 --fold-deg 70",
+        "square-twist-tessellation --rows 2 --cols 3 --layout type3-rows"}) {
     const auto r = run_command(cli() + " generate " + args + " --out " + out);
     EXPECT_EQ(r.status, 0) << args << "\n" << r.err;
     EXPECT_NO_THROW(read_fold(out)) << args;
@@ -92,6 +93,10 @@ TEST(GeneratorCli, BadFlagsNameTheFlagAndExitTwo) {
       {"waterbomb --n 2", "--n"},
       {"corrugated-p --beta-deg 10", "--beta-deg"},
       {"corrugated-q --odd 3444", "--odd"},
+      {"miura-tube --fold-deg 180", "--fold-deg"},
+      {"miura-tube --cols 3", "--cols"},
+      {"square-twist-tessellation --layout spiral", "--layout"},
+      {"square-twist-tessellation --spacing 1", "--spacing"},
       {"origami", "KIND"},
   };
   for (const auto& [args, flag] : cases) {
