@@ -132,13 +132,36 @@ void BM_Corrector(benchmark::State& state) {
   finish(state, c.pattern);
 }
 
-// One continuation step (predictor + corrector + tangent) from the closed form.
+// Work counters of a continue_one_dof call (ContinuationStats), per run.
+void continuation_counters(benchmark::State& state, const ContinuationResult& res) {
+  const ContinuationStats& st = res.stats;
+  const double steps = std::max<double>(1.0, static_cast<double>(res.points.size()) - 1);
+  state.counters["reuse"] = res.reused_factorization;
+  state.counters["factorizations"] = st.factorizations;
+  state.counters["fact_per_step"] = st.factorizations / steps;
+  state.counters["solves"] = st.solves;
+  state.counters["null_vectors"] = st.null_vectors;
+  state.counters["renewals"] = st.renewals;
+  state.counters["stale_restarts"] = st.stale_restarts;
+  state.counters["tangent_renewals"] = st.tangent_renewals;
+  state.counters["corrector_its"] = st.corrector_iterations;
+  state.counters["rejected"] = st.rejected_steps;
+  state.counters["s_per_step"] = st.seconds_total / steps;
+  state.counters["s_factorize"] = st.seconds_factorize;
+  state.counters["s_solve"] = st.seconds_solve;
+  state.counters["s_null_vector"] = st.seconds_null_vector;
+  state.counters["s_evaluate"] = st.seconds_evaluate;
+}
+
+// One continuation step (predictor + corrector + tangent) from the closed form; range(1):
+// 1 = factorisation reuse (chord corrector), 0 = Newton (refactorise every iteration).
 void BM_ContinuationStep(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
   ContinuationOptions o;
   o.max_points = 2;
   o.initial_step = 0.02 * std::sqrt(static_cast<double>(c.system.num_unknowns()));
   o.max_step = o.initial_step;
+  o.reuse = state.range(1) ? FactorizationReuse::kOn : FactorizationReuse::kOff;
   ContinuationResult res;
   const Eigen::VectorXd dir = c.closed_form(1.3) - c.exact;
   for (auto _ : state) res = continue_one_dof(c.system, c.exact, dir, [](const Eigen::VectorXd&) { return false; }, o);
@@ -147,11 +170,12 @@ void BM_ContinuationStep(benchmark::State& state) {
   state.counters["points"] = static_cast<double>(res.points.size());
   state.counters["residual"] = last.residual;
   state.counters["error_vs_closed_form"] = (last.x - c.closed_form(rho_s)).cwiseAbs().maxCoeff();
+  continuation_counters(state, res);
   finish(state, c.pattern);
 }
 
 // A full trace: from rho_s = 5 deg (the flat state itself is a singular point) to 170 deg in
-// about 100 equal arclength steps. Error:
+// about 100 equal arclength steps; range(1) as for BM_ContinuationStep. Error:
 // the worst distance of any traced point from the closed form at its own rho_s.
 void BM_Trace(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
@@ -159,6 +183,7 @@ void BM_Trace(benchmark::State& state) {
   const Eigen::VectorXd x0 = c.closed_form(start_fold);
   ContinuationOptions o;
   o.initial_step = o.max_step = (c.closed_form(end_fold) - x0).norm() / 100;
+  o.reuse = state.range(1) ? FactorizationReuse::kOn : FactorizationReuse::kOff;
   const int driver = c.driver();
   ContinuationResult res;
   for (auto _ : state)
@@ -173,6 +198,7 @@ void BM_Trace(benchmark::State& state) {
   state.counters["reached_deg"] = std::fabs(res.points.back().x[driver]) * 180 / kPi;
   state.counters["residual"] = worst_residual;
   state.counters["error_vs_closed_form"] = worst_error;
+  continuation_counters(state, res);
   finish(state, c.pattern);
 }
 
@@ -324,7 +350,7 @@ void register_all() {
     add("BM_Jacobian", BM_Jacobian)->Arg(n);
     add("BM_Factorize", BM_Factorize)->Args({n, 0});
     add("BM_Corrector", BM_Corrector)->Args({n, 0, 12});
-    add("BM_ContinuationStep", BM_ContinuationStep)->Arg(n);
+    for (int reuse : {1, 0}) add("BM_ContinuationStep", BM_ContinuationStep)->Args({n, reuse});
     add("BM_GradedMultiplier", BM_GradedMultiplier)->Arg(n);
     add("BM_GradedCorrector", BM_GradedCorrector)->Arg(n);
   }
@@ -333,6 +359,7 @@ void register_all() {
     add("BM_Jacobian", BM_Jacobian)->Arg(1000)->Iterations(1);
     add("BM_Factorize", BM_Factorize)->Args({1000, 0})->Iterations(1);
     add("BM_Corrector", BM_Corrector)->Args({1000, 0, 12})->Iterations(1);
+    for (int reuse : {1, 0}) add("BM_ContinuationStep", BM_ContinuationStep)->Args({1000, reuse})->Iterations(1);
   }
   // Solver settings (time against error) on one mid size: orderings and tolerances.
   const int mid = large >= 1 ? 320 : 100;
@@ -345,9 +372,12 @@ void register_all() {
   // DOF with a dense SVD at every point (kernel/solve/continuation.cpp, kRankRevealingLimit),
   // seconds per point, so a 100-step trace at n = 30 takes minutes. n = 10 (220 unknowns)
   // uses the SVD cheaply; n >= 40 uses inverse iteration on the corrector's factorisation.
-  for (int n : {10, 40, 100}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
+  // range(1): 1 = factorisation reuse, 0 = Newton (n = 10 is below 2000 unknowns: SVD tangent).
+  for (int n : {10, 40, 100})
+    for (int reuse : {1, 0}) add("BM_Trace", BM_Trace)->Args({n, reuse})->Iterations(1);
   if (large >= 1)
-    for (int n : {160, 320}) add("BM_Trace", BM_Trace)->Arg(n)->Iterations(1);
+    for (int n : {160, 320})
+      for (int reuse : {1, 0}) add("BM_Trace", BM_Trace)->Args({n, reuse})->Iterations(1);
   for (int n : {10, 20, 40}) add("BM_Rank", BM_Rank)->Arg(n);
   if (large >= 1) add("BM_Rank", BM_Rank)->Arg(100);
   for (int n : {5, 10, 20}) add("BM_WaterbombCorrector", BM_WaterbombCorrector)->Arg(n);

@@ -2,7 +2,9 @@
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "kernel/solve/newton_projection.hpp"
@@ -17,15 +19,8 @@ namespace {
 // on a 10^5-10^6-crease Jacobian costs far more than the whole corrector.
 constexpr int kRankRevealingLimit = 2000;
 
-// Unit tangent at x (null vector of J), or an empty vector if the DOF is not 1.
-Eigen::VectorXd tangent_at(const ClosureSystem& system, const Eigen::VectorXd& x) {
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> J;
-  system.evaluate(x, r, J);
-  const RankResult rk = jacobian_rank(J);
-  if (rk.dof != 1 || rk.null_space.cols() != 1) return {};
-  return rk.null_space.col(0);
-}
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // A fixed, generic start vector for inverse iteration (no special direction of the mesh).
 Eigen::VectorXd generic_vector(int n) {
@@ -34,12 +29,68 @@ Eigen::VectorXd generic_vector(int n) {
   return g;
 }
 
+// The linear algebra of one trace with its counters: the factorisation in use (of J_fac,
+// with w_fac its unit null vector), kept until refactor() replaces it.
+class Linear {
+ public:
+  Linear(const ClosureSystem& system, const Eigen::SparseMatrix<double>& pattern, double lambda_relative,
+         ContinuationStats& stats)
+      : system_(system), solver_(pattern), lambda_relative_(lambda_relative), stats_(stats) {}
+
+  void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::SparseMatrix<double>& J) {
+    const auto t0 = Clock::now();
+    system_.evaluate(x, r, J);
+    ++stats_.evaluations;
+    stats_.seconds_evaluate += seconds_since(t0);
+  }
+  // Factorises at J and computes w_fac (sign of `guess`). False (and no factor) on failure.
+  bool refactor(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& guess) {
+    auto t0 = Clock::now();
+    const int before = solver_.factorizations();
+    valid_ = solver_.factorize(J, lambda_relative_);
+    stats_.factorizations += solver_.factorizations() - before;
+    stats_.seconds_factorize += seconds_since(t0);
+    if (!valid_) return false;
+    J_fac_ = J;
+    t0 = Clock::now();
+    w_fac_ = solver_.null_vector(J_fac_, guess);
+    ++stats_.null_vectors;
+    stats_.seconds_null_vector += seconds_since(t0);
+    return true;
+  }
+  // J_fac^+ y (minimum norm, orthogonal to w_fac up to the refinement's accuracy).
+  Eigen::VectorXd solve(const Eigen::VectorXd& y) {
+    const auto t0 = Clock::now();
+    Eigen::VectorXd d = solver_.solve(J_fac_, y);
+    ++stats_.solves;
+    stats_.seconds_solve += seconds_since(t0);
+    return d;
+  }
+  void count_renewal() { ++stats_.renewals; }
+  ContinuationStats& stats() { return stats_; }
+  bool valid() const { return valid_; }
+  const Eigen::VectorXd& w() const { return w_fac_; }
+
+ private:
+  const ClosureSystem& system_;
+  MinimumNormSolver solver_;
+  double lambda_relative_;
+  ContinuationStats& stats_;
+  bool valid_ = false;
+  Eigen::SparseMatrix<double> J_fac_;
+  Eigen::VectorXd w_fac_;
+};
+
 struct Corrected {
   Eigen::VectorXd x;
+  Eigen::SparseMatrix<double> J;  // J(x), from the last evaluation
   double residual = 0.0;
   int iterations = 0;
+  int factorizations = 0;         // refactor() calls in this corrector
+  int polish_iterations = 0;      // reuse: iterations taken after the residual met the tolerance
   bool converged = false;
-  Eigen::VectorXd null_vector;  // unit null vector of J at the last linearisation point (if any)
+  bool stale_tried = false;       // reuse: stepped with a factorisation from an earlier point
+  bool stale_failed = false;      // ... and it contracted too slowly: restarted from xp, fresh
 };
 
 // Newton on [r(x); t.(x - xk) - h] = 0 from xp. With w the unit null vector of J(x), the
@@ -49,29 +100,122 @@ struct Corrected {
 // column rank at a regular 1-DOF point), so the corrector keeps Newton's quadratic
 // convergence while factorising only J^T J + lambda I, whose pattern (and symbolic
 // analysis, in `solver`) is shared by every step of the trace.
-Corrected correct(const ClosureSystem& system, MinimumNormSolver& solver, const Eigen::VectorXd& xk,
-                  const Eigen::VectorXd& t, double h, const Eigen::VectorXd& xp, const ContinuationOptions& options) {
+// Without reuse every iteration refactorises (Newton). With reuse the same step is taken
+// with [J_fac; t^T] (chord method). Its rate is not only ~ |x - x_fac| * curvature: the soft
+// (long-wavelength) modes of a large tessellation amplify the stale part of J_fac by
+// 1/sigma_min, so a factor from the previous point can leave errors along them that the
+// residual hardly shows and that spoil the next Newton step. Hence:
+//   - a factor inherited from an earlier point (stale, tried only if try_stale) must
+//     contract ||r|| by chord_contraction at every step, else the corrector restarts from xp
+//     with a fresh factor there (a Newton step from the predictor converges fast);
+//   - a factor made in this corrector is kept while it contracts by chord_contraction,
+//     else refactorised at the current iterate (Newton again).
+Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd& t, double h,
+                  const Eigen::VectorXd& xp, const ContinuationOptions& options, bool reuse, bool try_stale) {
   Corrected c;
   c.x = xp;
   Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> J;
+  double prev = std::numeric_limits<double>::infinity();
+  double last_step = std::numeric_limits<double>::infinity();  // ||dx||_inf of the last iteration
+  bool own = false;    // the factor in use was made in this corrector
+  bool force = reuse && !try_stale;
+  const int cap = reuse ? options.max_chord_iterations : options.max_corrector_iterations;
   for (;;) {
-    system.evaluate(c.x, r, J);
+    lin.evaluate(c.x, r, c.J);
     const double arc = t.dot(c.x - xk) - h;
     c.residual = std::max(r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0, std::abs(arc));
-    if (c.residual <= options.tolerance) {
+    // The chord also polishes: a residual at 1e-12 can still leave the point ~1e-10 off the
+    // manifold along the soft modes of a large tessellation (measured: 6e-10 rad against the
+    // Miura closed form at 320 x 320 cells), which Newton's last, overshooting step removes.
+    // One more chord step (none if the last step was already below the tolerance; a fixed
+    // count, because the step's own round-off floor, ~eps / sigma_min, grows with the mesh).
+    // Measured at 160 x 160 cells: error 1.5e-10 -> 3.2e-12 rad, trace time 25 -> 34 s.
+    constexpr int kPolish = 1;
+    if (c.residual <= options.tolerance &&
+        (!reuse || c.iterations == 0 || last_step <= options.tolerance || c.polish_iterations >= kPolish)) {
       c.converged = true;
       return c;
     }
-    if (c.iterations >= options.max_corrector_iterations || !std::isfinite(c.residual)) return c;
-    if (!solver.factorize(J, options.lambda_relative)) return c;
-    const Eigen::VectorXd d = solver.solve(J, r);
-    c.null_vector = solver.null_vector(J, t);
-    const double tw = t.dot(c.null_vector);
-    if (std::abs(tw) < 1e-8) return c;  // the tangent plane turned away: not a regular 1-DOF point
-    c.x -= d + ((arc - t.dot(d)) / tw) * c.null_vector;
+    // Polishing (residual already below the tolerance, last step not yet): one more step
+    // with the factor at hand, without the contraction test (the residual is at round-off).
+    const bool polishing = reuse && c.residual <= options.tolerance;
+    if (c.iterations >= cap) {
+      c.converged = polishing;
+      return c;
+    }
+    const bool slow = !polishing && !(c.residual <= options.chord_contraction * prev);  // NaN counts as slow
+    if (reuse && c.iterations > 0 && !own && slow) {
+      c.stale_failed = true;  // restart from the predictor with a fresh factor there
+      ++lin.stats().stale_restarts;
+      c.x = xp;
+      prev = std::numeric_limits<double>::infinity();
+      force = true;
+      continue;
+    }
+    if (!std::isfinite(c.residual)) return c;
+    const bool refactor = !reuse || !lin.valid() || force || (c.iterations > 0 && slow);
+    force = false;
+    if (refactor) {
+      if (reuse && lin.valid()) lin.count_renewal();
+      ++c.factorizations;
+      own = true;
+      if (!lin.refactor(c.J, t)) return c;
+    } else if (!own) {
+      c.stale_tried = true;
+    }
+    const Eigen::VectorXd d = lin.solve(r);
+    const double tw = t.dot(lin.w());
+    if (std::abs(tw) < 1e-8) {
+      if (refactor) return c;  // the tangent plane turned away: not a regular 1-DOF point
+      force = true;            // perhaps only the stale w_fac did
+      continue;
+    }
+    prev = c.residual;
+    if (polishing) ++c.polish_iterations;
+    const Eigen::VectorXd dx = d + ((arc - t.dot(d)) / tw) * lin.w();
+    last_step = dx.lpNorm<Eigen::Infinity>();
+    c.x -= dx;
     ++c.iterations;
   }
+}
+
+// Tangent at a corrected point x (J = J(x)) from the previous tangent t (or w_fac) with
+// stale-factor solves: w <- w - J_fac^+ J w contracts the component off null(J) at the chord rate.
+// Stops when ||J w||_inf is within 64 eps of the round-off bound max_i (|J| |w|)_i of the
+// product itself (1000x that if the projections stall); refactorises at x otherwise.
+Eigen::VectorXd project_tangent(Linear& lin, const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& t) {
+  // A renewal costs a factorisation and a null vector, 8-25 solves on large meshes: keep
+  // projecting while it still contracts.
+  constexpr int kMaxProjections = 12;
+  const Eigen::SparseMatrix<double> absJ = J.cwiseAbs();
+  // Start from t or from w_fac, whichever J annihilates better: w_fac wins when the factor
+  // was made during this step's corrector, near x.
+  Eigen::VectorXd w = t;
+  if (lin.valid()) {
+    const Eigen::VectorXd wf = lin.w().dot(t) < 0 ? Eigen::VectorXd(-lin.w()) : lin.w();
+    if ((J * wf).lpNorm<Eigen::Infinity>() < (J * t).lpNorm<Eigen::Infinity>()) w = wf;
+  }
+  double last = std::numeric_limits<double>::infinity();
+  for (int k = 0;; ++k) {
+    const Eigen::VectorXd y = J * w;
+    const double err = y.lpNorm<Eigen::Infinity>();
+    const double bound = 64 * std::numeric_limits<double>::epsilon() * (absJ * w.cwiseAbs()).maxCoeff();
+    if (err <= bound) return w;
+    if (k >= kMaxProjections || !(err < 0.7 * last)) {
+      // Stalled. Within 1000x the bound (~1e-11 relative) it is the floor of the stale
+      // solves, and a fresh null vector would be no more exact: keep w. Else the factor is
+      // too stale.
+      if (err <= 1e3 * bound) return w;
+      break;
+    }
+    last = err;
+    w -= lin.solve(y);
+    w /= w.norm();
+  }
+  lin.count_renewal();
+  ++lin.stats().tangent_renewals;
+  if (!lin.refactor(J, t)) return {};
+  return lin.w();
 }
 
 }  // namespace
@@ -82,10 +226,19 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
                                     const ContinuationOptions& options) {
   if (x0.size() != system.num_unknowns() || direction.size() != system.num_unknowns())
     throw std::invalid_argument("continue_one_dof: x0 and direction need num_unknowns() entries");
+  const auto t_begin = Clock::now();
   ContinuationResult out;
+  ContinuationStats& st = out.stats;
+  struct Finish {  // total time on every return path
+    ContinuationStats& st;
+    Clock::time_point t0;
+    ~Finish() { st.seconds_total = seconds_since(t0); }
+  } finish{st, t_begin};
   NewtonOptions nopt;
   nopt.tolerance = options.tolerance;
   const NewtonResult start = newton_project(system, x0, nopt);
+  st.factorizations += start.factorizations;
+  st.seconds_start = seconds_since(t_begin);
   if (!start.converged) {
     out.reason = "start not on manifold";
     return out;
@@ -94,25 +247,40 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
   Eigen::VectorXd r0;
   Eigen::SparseMatrix<double> J0;
   system.evaluate(start.x, r0, J0);
-  MinimumNormSolver solver(J0);
+  Linear lin(system, J0, options.lambda_relative, st);
   const bool rank_revealing = system.num_unknowns() <= kRankRevealingLimit;
-  // Large systems: the tangent is the null vector of the corrector's G (inverse iteration);
-  // the DOF is not re-checked by a rank-revealing factorisation there.
-  auto tangent = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& guess) -> Eigen::VectorXd {
-    if (rank_revealing) return tangent_at(system, x);
+  const bool reuse = options.reuse == FactorizationReuse::kOn ||
+                     (options.reuse == FactorizationReuse::kAuto && !rank_revealing);
+  out.reused_factorization = reuse;
+  // Small systems: unit null vector from a rank-revealing factorisation, which also checks
+  // DOF = 1 (empty if not).
+  auto rank_tangent = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
+    const auto t0 = Clock::now();
     Eigen::VectorXd r;
     Eigen::SparseMatrix<double> J;
     system.evaluate(x, r, J);
-    if (!solver.factorize(J, options.lambda_relative)) return {};
-    return solver.null_vector(J, guess);
+    const RankResult rk = jacobian_rank(J);
+    ++st.rank_factorizations;
+    st.seconds_rank += seconds_since(t0);
+    if (rk.dof != 1 || rk.null_space.cols() != 1) return {};
+    return rk.null_space.col(0);
   };
-  Eigen::VectorXd t = tangent(start.x, generic_vector(system.num_unknowns()));
+  // Large systems: the null vector of a fresh factorisation at x (inverse iteration); the DOF
+  // is not re-checked there.
+  auto fresh_tangent = [&](const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& guess) -> Eigen::VectorXd {
+    if (!lin.refactor(J, guess)) return {};
+    return lin.w();
+  };
+  Eigen::VectorXd t = rank_revealing ? rank_tangent(start.x) : fresh_tangent(J0, generic_vector(system.num_unknowns()));
   if (t.size() == 0) {
     out.reason = "not 1 DOF";
     return out;
   }
   if (t.dot(direction) < 0) t = -t;
   double h = options.initial_step;
+  // Reuse: after a stale factor failed, skip the stale attempt for 1, 2, 4, .. 16 steps
+  // (each failed attempt costs solves and an evaluation); a success resets.
+  int stale_skip = 0, stale_wait = 0;
   while (static_cast<int>(out.points.size()) < options.max_points) {
     if (stop(out.points.back().x)) {
       out.stopped = true;
@@ -120,15 +288,29 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
       return out;
     }
     const Eigen::VectorXd& xk = out.points.back().x;
-    const Corrected c = correct(system, solver, xk, t, h, xk + h * t, options);
+    const Corrected c = correct(lin, xk, t, h, xk + h * t, options, reuse, stale_wait == 0);
+    st.corrector_iterations += c.iterations;
+    if (c.stale_failed) {
+      stale_skip = std::min(std::max(1, 2 * stale_skip), 16);
+      stale_wait = stale_skip;
+    } else if (c.stale_tried) {
+      stale_skip = 0;
+    } else if (stale_wait > 0) {
+      --stale_wait;
+    }
     Eigen::VectorXd t_new;
     if (c.converged) {
-      // Large systems reuse the null vector of the last corrector step (at an iterate within
-      // about the previous residual of c.x): accurate enough for a predictor and the turn test.
-      t_new = (rank_revealing || c.null_vector.size() == 0) ? tangent(c.x, t) : c.null_vector;
+      if (rank_revealing)
+        t_new = rank_tangent(c.x);
+      else if (reuse)
+        t_new = project_tangent(lin, c.J, t);
+      else  // Newton: the null vector of the last corrector step (at an iterate within about
+            // the previous residual of c.x), accurate enough for a predictor and the turn test
+        t_new = c.factorizations > 0 ? lin.w() : fresh_tangent(c.J, t);
       if (t_new.size() != 0 && t_new.dot(t) < 0) t_new = -t_new;
     }
     if (!c.converged || t_new.size() == 0 || std::acos(std::clamp(t_new.dot(t), -1.0, 1.0)) > 0.5) {
+      ++st.rejected_steps;
       h *= 0.5;
       if (h < options.min_step) {
         out.reason = "step too small";
@@ -138,7 +320,12 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     }
     out.points.push_back({c.x, c.residual, h, c.iterations});
     t = t_new;
-    if (c.iterations <= 3) h = std::min(h * 1.5, options.max_step);
+    // Growth: Newton after a quick corrector; chord only while the factor needed no renewal
+    // (a larger step would make the stale factor contract worse).
+    // Reuse: about one factorisation per step is the norm (a fresh factor at the predictor
+    // when the stale one fails), so only more than that, or many chord steps, is "not easy".
+    const bool easy = reuse ? c.factorizations <= 1 && c.iterations - c.polish_iterations <= 5 : c.iterations <= 3;
+    if (easy) h = std::min(h * 1.5, options.max_step);
   }
   out.reason = "max_points";
   return out;

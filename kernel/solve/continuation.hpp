@@ -10,9 +10,25 @@
 // [r(x); t_k . (x - x_k) - h] = 0, each step the exact solution of the augmented linear
 // system built from the minimum-norm step and the null vector of J (MinimumNormSolver:
 // CHOLMOD on J^T J + lambda I, one symbolic analysis for the whole trace). The step h grows
-// by 1.5 after a corrector that converges in <= 3 iterations and is halved after a failure
+// by 1.5 after a corrector that converges in <= 3 iterations (reuse: in <= 5 chord steps with
+// at most one factorisation) and is halved after a failure
 // (not converged, or the DOF at the new point is not 1, or the tangent turned by more than
 // 0.5 rad).
+//
+// Factorisation reuse (ContinuationOptions::reuse): a chord (modified-Newton) corrector that
+// keeps the last factorisation, its Jacobian J_fac and null vector w_fac across corrector
+// iterations and continuation steps, and steps dx = J_fac^+ r + beta w_fac. Every step must
+// contract the residual by `chord_contraction`. If a factor inherited from an earlier point
+// fails that, the corrector restarts from the predictor with a fresh factor there (the stale
+// steps leave soft-mode errors that spoil Newton from their iterates), and the next steps skip
+// the stale attempt for 1, 2, 4, .. 16 steps; a factor made in this corrector that fails it is
+// renewed at the current iterate. The tangent at a new point is the previous one (or w_fac)
+// projected onto null(J(x)) with stale-factor solves, w <- w - J_fac^+ J w, until ||J w||_inf
+// is at the round-off of the product (within 1000x of it if the projections stall; a fresh
+// factorisation only if they stall above that).
+// The tolerance is the same at every accepted point; only the work to reach it changes. Once
+// the residual meets it, the chord takes one more step (a polish): without it the point can
+// sit ~1e-10 off the manifold along the soft modes of a large mesh.
 //
 // Units: x, h (arclength in unknown space) and residuals in radians.
 #include <Eigen/Core>
@@ -24,6 +40,11 @@
 
 namespace rigidfold {
 
+// kAuto: reuse above kRankRevealingLimit (2000) unknowns, where a factorisation costs 6-20
+// solves (Miura 160..1000 cells) and traces get faster; below it Newton as before (quadratic
+// convergence, unchanged small-pattern behaviour; a factorisation is cheap there).
+enum class FactorizationReuse { kAuto, kOn, kOff };
+
 struct ContinuationOptions {
   double initial_step = 0.05;   // h at the start (radians of arclength)
   double min_step = 1e-8;       // give up below this
@@ -32,6 +53,27 @@ struct ContinuationOptions {
   double tolerance = 1e-12;     // corrector stop, ||r||_inf (radians)
   int max_corrector_iterations = 10;
   double lambda_relative = 1e-14;
+  FactorizationReuse reuse = FactorizationReuse::kAuto;
+  double chord_contraction = 0.25;   // reuse: refactorise when ||r|| drops by less than this factor
+  int max_chord_iterations = 20;     // reuse: corrector iterations cap (replaces max_corrector_iterations)
+};
+
+// Work done by one continue_one_dof call (all attempts, rejected steps and the start's
+// projection included). Times are wall seconds.
+struct ContinuationStats {
+  int factorizations = 0;         // numeric factorisations of J^T J + lambda I (lambda retries count)
+  int solves = 0;                 // minimum-norm solves (MinimumNormSolver::solve: 2 CHOLMOD solves each)
+  int null_vectors = 0;           // inverse-iteration null vectors (MinimumNormSolver::null_vector: 4 CHOLMOD solves)
+  int evaluations = 0;            // evaluations of r and J
+  int rank_factorizations = 0;    // rank-revealing tangents (jacobian_rank), <= 2000 unknowns only
+  int renewals = 0;               // reuse: factorisations forced by slow contraction, an uphill step,
+                                  // a stale w_fac or a stalled tangent projection (all of these)
+  int stale_restarts = 0;         // reuse: correctors restarted from xp because a stale factor failed
+  int tangent_renewals = 0;       // reuse: tangent projections that stalled and refactorised
+  int corrector_iterations = 0;
+  int rejected_steps = 0;
+  double seconds_factorize = 0.0, seconds_solve = 0.0, seconds_null_vector = 0.0, seconds_evaluate = 0.0,
+         seconds_rank = 0.0, seconds_start = 0.0, seconds_total = 0.0;
 };
 
 struct ContinuationPoint {
@@ -45,6 +87,8 @@ struct ContinuationResult {
   std::vector<ContinuationPoint> points;  // the start (after projection) first
   bool stopped = false;                   // `stop` returned true at the last point
   std::string reason;                     // "stop", "max_points", "step too small", "start not on manifold", "not 1 DOF"
+  bool reused_factorization = false;      // the chord corrector was used (options.reuse resolved)
+  ContinuationStats stats;
 };
 
 // Traces from x0 (projected onto the manifold first) in the direction of `direction`
