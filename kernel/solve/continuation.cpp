@@ -87,7 +87,6 @@ struct Corrected {
   double residual = 0.0;
   int iterations = 0;
   int factorizations = 0;         // refactor() calls in this corrector
-  int polish_iterations = 0;      // reuse: iterations taken after the residual met the tolerance
   bool converged = false;
   bool stale_tried = false;       // reuse: stepped with a factorisation from an earlier point
   bool stale_failed = false;      // ... and it contracted too slowly: restarted from xp, fresh
@@ -116,7 +115,6 @@ Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd&
   c.x = xp;
   Eigen::VectorXd r;
   double prev = std::numeric_limits<double>::infinity();
-  double last_step = std::numeric_limits<double>::infinity();  // ||dx||_inf of the last iteration
   bool own = false;    // the factor in use was made in this corrector
   bool force = reuse && !try_stale;
   const int cap = reuse ? options.max_chord_iterations : options.max_corrector_iterations;
@@ -124,26 +122,12 @@ Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd&
     lin.evaluate(c.x, r, c.J);
     const double arc = t.dot(c.x - xk) - h;
     c.residual = std::max(r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0, std::abs(arc));
-    // The chord also polishes: a residual at 1e-12 can still leave the point ~1e-10 off the
-    // manifold along the soft modes of a large tessellation (measured: 6e-10 rad against the
-    // Miura closed form at 320 x 320 cells), which Newton's last, overshooting step removes.
-    // One more chord step (none if the last step was already below the tolerance; a fixed
-    // count, because the step's own round-off floor, ~eps / sigma_min, grows with the mesh).
-    // Measured at 160 x 160 cells: error 1.5e-10 -> 3.2e-12 rad, trace time 25 -> 34 s.
-    constexpr int kPolish = 1;
-    if (c.residual <= options.tolerance &&
-        (!reuse || c.iterations == 0 || last_step <= options.tolerance || c.polish_iterations >= kPolish)) {
+    if (c.residual <= options.tolerance) {
       c.converged = true;
       return c;
     }
-    // Polishing (residual already below the tolerance, last step not yet): one more step
-    // with the factor at hand, without the contraction test (the residual is at round-off).
-    const bool polishing = reuse && c.residual <= options.tolerance;
-    if (c.iterations >= cap) {
-      c.converged = polishing;
-      return c;
-    }
-    const bool slow = !polishing && !(c.residual <= options.chord_contraction * prev);  // NaN counts as slow
+    if (c.iterations >= cap) return c;
+    const bool slow = !(c.residual <= options.chord_contraction * prev);  // NaN counts as slow
     if (reuse && c.iterations > 0 && !own && slow) {
       c.stale_failed = true;  // restart from the predictor with a fresh factor there
       ++lin.stats().stale_restarts;
@@ -171,10 +155,7 @@ Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd&
       continue;
     }
     prev = c.residual;
-    if (polishing) ++c.polish_iterations;
-    const Eigen::VectorXd dx = d + ((arc - t.dot(d)) / tw) * lin.w();
-    last_step = dx.lpNorm<Eigen::Infinity>();
-    c.x -= dx;
+    c.x -= d + ((arc - t.dot(d)) / tw) * lin.w();
     ++c.iterations;
   }
 }
@@ -322,9 +303,7 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     t = t_new;
     // Growth: Newton after a quick corrector; chord only while the factor needed no renewal
     // (a larger step would make the stale factor contract worse).
-    // Reuse: about one factorisation per step is the norm (a fresh factor at the predictor
-    // when the stale one fails), so only more than that, or many chord steps, is "not easy".
-    const bool easy = reuse ? c.factorizations <= 1 && c.iterations - c.polish_iterations <= 5 : c.iterations <= 3;
+    const bool easy = reuse ? c.factorizations == 0 && c.iterations <= 5 : c.iterations <= 3;
     if (easy) h = std::min(h * 1.5, options.max_step);
   }
   out.reason = "max_points";
