@@ -16,6 +16,13 @@ namespace {
 using Json = nlohmann::ordered_json;
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
+// The check's "rigidly_foldable": true, false, or null when the models available did not decide.
+Json rigidly_foldable_json(Verdict v) {
+  if (v == Verdict::kRigidlyFoldable) return true;
+  if (v == Verdict::kNotRigidlyFoldable) return false;
+  return nullptr;
+}
+
 Json obstruction_json(const Obstruction& o) {
   Json j;
   j["kind"] = to_string(o.kind);
@@ -59,9 +66,7 @@ Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignm
   Json j;
   j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
   j["verdict"] = to_string(g.verdict);
-  if (g.verdict == Verdict::kRigidlyFoldable) j["rigidly_foldable"] = true;
-  else if (g.verdict == Verdict::kNotRigidlyFoldable) j["rigidly_foldable"] = false;
-  else j["rigidly_foldable"] = nullptr;
+  j["rigidly_foldable"] = rigidly_foldable_json(g.verdict);
   j["model"] = g.model;
   j["model_choice"] = why_general;
   j["reason"] = g.reason;
@@ -183,9 +188,7 @@ Json mobility_json(const CreasePattern& p, const Topology& t, bool ignore_assign
   Json j;
   j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
   j["verdict"] = to_string(m.verdict);
-  if (m.verdict == Verdict::kRigidlyFoldable) j["rigidly_foldable"] = true;
-  else if (m.verdict == Verdict::kNotRigidlyFoldable) j["rigidly_foldable"] = false;
-  else j["rigidly_foldable"] = nullptr;
+  j["rigidly_foldable"] = rigidly_foldable_json(m.verdict);
   j["model"] = "general loop-closure solver with SE(3) hole closures, from the given state";
   j["model_choice"] = "the sheet has " + std::to_string(holes) +
                       " hole(s): the multiplier model and the flat-state search do not apply; the given (3D) state is "
@@ -254,9 +257,7 @@ Json foldability_json(const CreasePattern& p, const Topology& t, bool ignore_ass
   Json j;
   j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
   j["verdict"] = to_string(v.verdict);
-  if (v.verdict == Verdict::kRigidlyFoldable) j["rigidly_foldable"] = true;
-  else if (v.verdict == Verdict::kNotRigidlyFoldable) j["rigidly_foldable"] = false;
-  else j["rigidly_foldable"] = nullptr;  // not decided by the models available
+  j["rigidly_foldable"] = rigidly_foldable_json(v.verdict);
   j["model"] = v.model;
   j["model_choice"] = "every interior vertex is a flat-foldable degree-4 vertex: exact O(creases) model";
   j["is_proof"] = true;

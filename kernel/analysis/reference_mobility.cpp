@@ -138,7 +138,6 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
   m.dof = rank.dof;
   m.sigma_kept = rank.sigma_kept;
   m.sigma_dropped = rank.sigma_dropped;
-  m.rank_threshold = rank.threshold;
   if (m.dof == 0) {
     m.verdict = Verdict::kNotRigidlyFoldable;
     m.reason = "the reference state is first-order rigid (closure Jacobian of full column rank), hence rigid";

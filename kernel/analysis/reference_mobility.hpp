@@ -67,7 +67,7 @@ struct ReferenceMobility {
   int dof = 0;                     // at the reference state
   int holes = 0;                   // SE(3) hole closures used
   double reference_residual = 0;   // ||r(x0)||_inf
-  double sigma_kept = 0, sigma_dropped = 0, rank_threshold = 0;  // the rank cut
+  double sigma_kept = 0, sigma_dropped = 0;  // singular values either side of the rank cut
   std::vector<MobilityBranch> branches;
   double max_residual = 0;
   std::string reason;

@@ -127,7 +127,7 @@ void print(const char* name, const TraceCheck& tc) {
             << tc.worst_error << ", " << tc.ms << " ms\n";
 }
 
-// 40 x 40 cells (above the 2000-unknown rank-revealing limit, so reuse is the default): the
+// 40 x 40 cells (above the 2000-unknown rank-revealing limit, so kAuto picks reuse): the
 // chord corrector traces the same closed-form path as Newton, to the same tolerance, with
 // fewer factorisations (about 1.6 against 2.9 per step here).
 TEST(SolverContinuation, ReuseOnLargeMiuraMatchesNewtonWithFewerFactorizations) {
