@@ -4,12 +4,12 @@
 // Creases not listed keep the pattern's edges_foldAngle (0 where it has none).
 #include <cmath>
 #include <iostream>
-#include <numbers>
 
 #include "app/commands.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -17,13 +17,11 @@
 namespace rigidfold::cli {
 namespace {
 
-constexpr double kRad = std::numbers::pi / 180.0;
-
 double angle_value(const nlohmann::json& v, const std::string& where) {
   if (!v.is_number()) throw InputError(where, "must be a number of degrees");
   const double d = v.get<double>();
   if (!std::isfinite(d) || std::fabs(d) > 180.0) throw InputError(where, "fold angle must be finite and within [-180, 180] deg");
-  return d * kRad;
+  return to_radians(d);
 }
 
 void set_angle(Eigen::VectorXd& rho, const CreasePattern& p, const Topology& t, long e, double value, const std::string& where) {

@@ -8,7 +8,6 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <set>
 
@@ -21,6 +20,7 @@
 #include "data/generators/square_twist.hpp"
 #include "data/generators/square_twist_tessellation.hpp"
 #include "data/generators/waterbomb.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 
@@ -99,10 +99,10 @@ std::string upper(std::string s) {
 CreasePattern make_miura_tube(const GenerateOptions& o, bool fold_given) {
   gen::MiuraTubeParams p;
   p.rows = o.rows;
-  p.alpha = gen::rad(o.alpha_deg.value_or(60));
+  p.alpha = to_radians(o.alpha_deg.value_or(60));
   p.a = o.a;
   p.b = o.b;
-  p.fold = gen::rad(fold_given ? o.fold_deg : 90.0);
+  p.fold = to_radians(fold_given ? o.fold_deg : 90.0);
   return with_flags([&] { return gen::miura_tube(p); });
 }
 
@@ -110,7 +110,7 @@ CreasePattern make_square_twist_tessellation(const GenerateOptions& o) {
   gen::SquareTwistTessellationParams p;
   p.rows = o.rows;
   p.cols = o.cols;
-  p.twist = gen::rad(o.twist_deg);
+  p.twist = to_radians(o.twist_deg);
   p.side = o.side;
   p.spacing = o.spacing;
   return with_flags([&] {
@@ -123,7 +123,7 @@ CreasePattern make_miura(const GenerateOptions& o, bool folded) {
   gen::MiuraParams p;
   p.rows = o.rows;
   p.cols = o.cols;
-  p.alpha = gen::rad(o.alpha_deg.value_or(60));
+  p.alpha = to_radians(o.alpha_deg.value_or(60));
   p.a = o.a;
   p.b = o.b;
   p.perturbation = o.perturb;
@@ -133,7 +133,7 @@ CreasePattern make_miura(const GenerateOptions& o, bool folded) {
   if (folded) {
     if (o.perturb != 0) throw InputError("--fold-deg", "the closed-form fold exists only for the unperturbed Miura-ori (--perturb 0)");
     if (!(std::fabs(o.fold_deg) <= 180)) throw InputError("--fold-deg", "must lie in [-180, 180]");
-    pattern.fold_angles = gen::miura_fold_angles(pattern, p, gen::rad(o.fold_deg));
+    pattern.fold_angles = gen::miura_fold_angles(pattern, p, to_radians(o.fold_deg));
     pattern.fold_angles_in_file = true;
     pattern.extra["frame_title"] = pattern.extra["frame_title"].get<std::string>() +
                                    "; edges_foldAngle: closed-form rigid fold, straight creases " +
@@ -144,7 +144,7 @@ CreasePattern make_miura(const GenerateOptions& o, bool folded) {
 
 CreasePattern make_square_twist(const GenerateOptions& o, bool explicit_assignment, bool diagonal_given, bool type_given) {
   gen::SquareTwistParams p;
-  p.twist = gen::rad(o.twist_deg);
+  p.twist = to_radians(o.twist_deg);
   p.side = o.side;
   p.pleat = o.pleat;
   const std::string d = upper(o.diagonal);
@@ -185,8 +185,8 @@ CreasePattern make_waterbomb(const GenerateOptions& o) {
 
 CreasePattern make_corrugated(const GenerateOptions& o, gen::CorrugatedUnit unit, bool assignment_given, bool odd_given) {
   gen::CorrugatedParams p;
-  p.alpha = gen::rad(o.alpha_deg.value_or(135));
-  p.beta = gen::rad(o.beta_deg);
+  p.alpha = to_radians(o.alpha_deg.value_or(135));
+  p.beta = to_radians(o.beta_deg);
   p.a = o.a;
   p.b = o.b;
   if (assignment_given && odd_given) throw InputError("--odd", "give either --assignment or --odd, not both");

@@ -3,18 +3,16 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
-#include <numbers>
 
 #include "app/commands.hpp"
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/flat_foldability.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 nlohmann::ordered_json info_json(const std::string& path, const CreasePattern& p, const Topology& t, double tol_deg) {
   using Json = nlohmann::ordered_json;
@@ -44,7 +42,7 @@ nlohmann::ordered_json info_json(const std::string& path, const CreasePattern& p
                      {"genus", c.genus}, {"holes", c.holes}});
   j["components"] = comps;
 
-  const auto ff = flat_foldability(p, t, tol_deg / kDeg);
+  const auto ff = flat_foldability(p, t, to_radians(tol_deg));
   j["tolerance_deg"] = tol_deg;
   int kawasaki_ok = 0, maekawa_ok = 0, developable = 0;
   Json verts = Json::array();
@@ -55,15 +53,15 @@ nlohmann::ordered_json info_json(const std::string& path, const CreasePattern& p
     Json vj;
     vj["vertex"] = r.vertex;
     vj["degree"] = r.degree;
-    vj["sector_sum_deg"] = r.sector_sum * kDeg;
-    vj["kawasaki_residual_deg"] = r.kawasaki_residual ? Json(*r.kawasaki_residual * kDeg) : Json(nullptr);
+    vj["sector_sum_deg"] = to_degrees(r.sector_sum);
+    vj["kawasaki_residual_deg"] = r.kawasaki_residual ? Json(to_degrees(*r.kawasaki_residual)) : Json(nullptr);
     vj["kawasaki"] = r.kawasaki;
     vj["mountains"] = r.mountains;
     vj["valleys"] = r.valleys;
     vj["unassigned"] = r.unassigned;
     vj["maekawa"] = r.maekawa ? Json(*r.maekawa) : Json(nullptr);
     Json sectors = Json::array();
-    for (double s : t.stars[r.vertex].fans[0].sectors) sectors.push_back(s * kDeg);
+    for (double s : t.stars[r.vertex].fans[0].sectors) sectors.push_back(to_degrees(s));
     vj["sectors_deg"] = sectors;
     vj["creases"] = t.stars[r.vertex].fans[0].edges;
     verts.push_back(vj);
@@ -74,7 +72,7 @@ nlohmann::ordered_json info_json(const std::string& path, const CreasePattern& p
     const Eigen::VectorXd rho = reference_fold_angles(p, t);
     double max_abs = 0;
     for (int e = 0; e < rho.size(); ++e) max_abs = std::max(max_abs, std::fabs(rho[e]));
-    j["reference_max_fold_deg"] = max_abs * kDeg;
+    j["reference_max_fold_deg"] = to_degrees(max_abs);
   }
   j["interior"] = verts;
   j["warnings"] = p.warnings;

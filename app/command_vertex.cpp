@@ -8,10 +8,10 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/spherical_4r.hpp"
@@ -19,8 +19,6 @@
 
 namespace rigidfold::cli {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // Asymmetric Miura vertex closed form (kernel/vertex/miura_vertex.hpp). theta is half the
 // fold angle of the incoming spinal crease; flags are in degrees, checked here so that the
@@ -40,27 +38,27 @@ void add_miura_command(CLI::App& vertex) {
     for (const auto& [flag, v] : {std::pair{"--alpha1", a->alpha1}, std::pair{"--alpha2", a->alpha2}})
       if (!std::isfinite(v) || !(v > 0.0) || !(v < 90.0)) throw InputError(flag, "must be in (0, 90) degrees");
     if (!std::isfinite(a->theta)) throw InputError("--theta", "must be finite");
-    const double limit = miura_theta_limit(a->alpha1 / kDeg, a->alpha2 / kDeg);
+    const double limit = miura_theta_limit(to_radians(a->alpha1), to_radians(a->alpha2));
     // Compared in degrees, as printed: --theta equal to the printed limit is accepted
     // (and clamped to the limit in radians against the last-bit rounding of the conversion).
-    if (std::fabs(a->theta) > limit * kDeg)
-      throw InputError("--theta", "|theta| must not exceed theta_limit = " + std::to_string(limit * kDeg) + " degrees");
-    const double theta = std::clamp(a->theta / kDeg, -limit, limit);
-    const MiuraVertexState st = miura_vertex(a->alpha1 / kDeg, a->alpha2 / kDeg, theta);
+    if (std::fabs(a->theta) > to_degrees(limit))
+      throw InputError("--theta", "|theta| must not exceed theta_limit = " + std::to_string(to_degrees(limit)) + " degrees");
+    const double theta = std::clamp(to_radians(a->theta), -limit, limit);
+    const MiuraVertexState st = miura_vertex(to_radians(a->alpha1), to_radians(a->alpha2), theta);
     nlohmann::ordered_json j;
     j["alpha1_deg"] = a->alpha1;
     j["alpha2_deg"] = a->alpha2;
     j["theta_deg"] = a->theta;
-    j["phi_deg"] = st.phi * kDeg;
-    j["psi_deg"] = st.psi * kDeg;
-    j["theta_limit_deg"] = st.theta_limit * kDeg;
+    j["phi_deg"] = to_degrees(st.phi);
+    j["psi_deg"] = to_degrees(st.psi);
+    j["theta_limit_deg"] = to_degrees(st.theta_limit);
     nlohmann::ordered_json folds = nlohmann::ordered_json::array();
     for (int i = 0; i < 4; ++i)
       folds.push_back({{"crease", std::string(kMiuraCreaseNames[i])},
-                       {"direction_deg", st.flat_directions[i] * kDeg},
-                       {"fold_angle_deg", st.fold_angles[i] * kDeg}});
+                       {"direction_deg", to_degrees(st.flat_directions[i])},
+                       {"fold_angle_deg", to_degrees(st.fold_angles[i])}});
     j["fold_angles_deg"] = folds;
-    j["sectors_deg"] = {st.sectors[0] * kDeg, st.sectors[1] * kDeg, st.sectors[2] * kDeg, st.sectors[3] * kDeg};
+    j["sectors_deg"] = {to_degrees(st.sectors[0]), to_degrees(st.sectors[1]), to_degrees(st.sectors[2]), to_degrees(st.sectors[3])};
     j["closure_residual_rad"] =
         vertex_closure_residual(std::span<const double>(st.sectors.data(), 4), std::span<const double>(st.fold_angles.data(), 4)).norm();
     if (a->json) {
@@ -69,14 +67,14 @@ void add_miura_command(CLI::App& vertex) {
     }
     char line[256];
     std::snprintf(line, sizeof line, "Miura vertex, alpha1 = %.12g deg, alpha2 = %.12g deg, theta = %.12g deg (limit +-%.12g deg)\n",
-                  a->alpha1, a->alpha2, a->theta, st.theta_limit * kDeg);
+                  a->alpha1, a->alpha2, a->theta, to_degrees(st.theta_limit));
     std::cout << line;
-    std::snprintf(line, sizeof line, "  phi = %.12g deg, psi = %.12g deg\n", st.phi * kDeg, st.psi * kDeg);
+    std::snprintf(line, sizeof line, "  phi = %.12g deg, psi = %.12g deg\n", to_degrees(st.phi), to_degrees(st.psi));
     std::cout << line;
     std::cout << "  fold angles (valley > 0), creases CCW:\n";
     for (int i = 0; i < 4; ++i) {
       std::snprintf(line, sizeof line, "    %-13s at %8.4f deg: %.12g deg\n", std::string(kMiuraCreaseNames[i]).c_str(),
-                    st.flat_directions[i] * kDeg, st.fold_angles[i] * kDeg);
+                    to_degrees(st.flat_directions[i]), to_degrees(st.fold_angles[i]));
       std::cout << line;
     }
     std::snprintf(line, sizeof line, "  closure residual %.2e rad\n", j["closure_residual_rad"].get<double>());
@@ -105,8 +103,8 @@ void add_vertex_command(CLI::App& app) {
     for (std::size_t i = 0; i < 4; ++i)
       if (!std::isfinite(a->twists[i])) throw InputError("--twists[" + std::to_string(i) + "]", "must be finite");
     if (!std::isfinite(a->input) || std::fabs(a->input) > 180.0) throw InputError("--input", "must be within [-180, 180] degrees");
-    const S4RSectors tw{a->twists[0] / kDeg, a->twists[1] / kDeg, a->twists[2] / kDeg, a->twists[3] / kDeg};
-    const S4RBranches b = s4r_branches(tw, a->input / kDeg, 0);
+    const S4RSectors tw{to_radians(a->twists[0]), to_radians(a->twists[1]), to_radians(a->twists[2]), to_radians(a->twists[3])};
+    const S4RBranches b = s4r_branches(tw, to_radians(a->input), 0);
     const S4RInputRange range = s4r_input_range(tw, 0);
     nlohmann::ordered_json j;
     j["twists_deg"] = a->twists;
@@ -115,13 +113,13 @@ void add_vertex_command(CLI::App& app) {
     nlohmann::ordered_json branches = nlohmann::ordered_json::array();
     for (const auto& br : b.branches) {
       std::vector<double> deg(4), rho(br.begin(), br.end());
-      for (int i = 0; i < 4; ++i) deg[i] = br[i] * kDeg;
+      for (int i = 0; i < 4; ++i) deg[i] = to_degrees(br[i]);
       const double residual = vertex_closure_residual(std::span<const double>(tw.data(), 4), rho).norm();
       branches.push_back({{"angles_deg", deg}, {"closure_residual_rad", residual}});
     }
     j["branches"] = branches;
     j["degenerate"] = b.degenerate;
-    j["input_range_deg"] = {{"feasible", range.feasible}, {"min_abs", range.min_abs * kDeg}, {"max_abs", range.max_abs * kDeg}};
+    j["input_range_deg"] = {{"feasible", range.feasible}, {"min_abs", to_degrees(range.min_abs)}, {"max_abs", to_degrees(range.max_abs)}};
     if (a->json) {
       std::cout << j.dump(2) << "\n";
       return;
@@ -129,7 +127,7 @@ void add_vertex_command(CLI::App& app) {
     std::cout << "spherical 4R, twists " << a->twists[0] << ", " << a->twists[1] << ", " << a->twists[2] << ", " << a->twists[3]
               << " deg; input theta1 = " << a->input << " deg\n";
     if (!range.feasible) std::cout << "  the linkage cannot be assembled for any input\n";
-    else std::cout << "  input range: " << range.min_abs * kDeg << " <= |theta1| <= " << range.max_abs * kDeg << " deg\n";
+    else std::cout << "  input range: " << to_degrees(range.min_abs) << " <= |theta1| <= " << to_degrees(range.max_abs) << " deg\n";
     if (!b.feasible) std::cout << "  no branch at this input (outside the motion limits)\n";
     int k = 0;
     for (const auto& br : j["branches"]) {

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,6 +23,7 @@
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/continuation.hpp"
 #include "kernel/solve/newton_projection.hpp"
@@ -32,7 +32,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double peak_rss_mb() {
   rusage u{};
@@ -179,7 +178,7 @@ void BM_ContinuationStep(benchmark::State& state) {
 // the worst distance of any traced point from the closed form at its own rho_s.
 void BM_Trace(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
-  const double start_fold = 5 * kPi / 180, end_fold = 170 * kPi / 180;
+  const double start_fold = to_radians(5), end_fold = to_radians(170);
   const Eigen::VectorXd x0 = c.closed_form(start_fold);
   ContinuationOptions o;
   o.initial_step = o.max_step = (c.closed_form(end_fold) - x0).norm() / 100;
@@ -195,7 +194,7 @@ void BM_Trace(benchmark::State& state) {
     worst_error = std::max(worst_error, (pt.x - c.closed_form(std::fabs(pt.x[driver]))).cwiseAbs().maxCoeff());
   }
   state.counters["points"] = static_cast<double>(res.points.size());
-  state.counters["reached_deg"] = std::fabs(res.points.back().x[driver]) * 180 / kPi;
+  state.counters["reached_deg"] = to_degrees(std::fabs(res.points.back().x[driver]));
   state.counters["residual"] = worst_residual;
   state.counters["error_vs_closed_form"] = worst_error;
   continuation_counters(state, res);

@@ -5,24 +5,24 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "design/strings/miura_string.hpp"
 #include "design/strings/string_fit_ceres.hpp"
 #include "design/strings/string_fit_nlopt.hpp"
 #include "design/strings/string_inverse.hpp"
 #include "design/strings/string_kinematics.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace {
 
 using namespace rigidfold::design;
-constexpr double kDeg = std::numbers::pi / 180;
+using rigidfold::to_radians;
 
-MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, 30 * kDeg, 65 * kDeg, 0.5); }
+MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, to_radians(30), to_radians(65), 0.5); }
 
 std::vector<Eigen::Vector3d> helix(int n) {
   std::vector<Eigen::Vector3d> p;
-  for (int k = 0; k < n + 2; ++k) p.emplace_back(0.15 * std::cos(k * 172 * kDeg), 0.15 * std::sin(k * 172 * kDeg), 1.0 * k);
+  for (int k = 0; k < n + 2; ++k) p.emplace_back(0.15 * std::cos(to_radians(k * 172)), 0.15 * std::sin(to_radians(k * 172)), 1.0 * k);
   return p;
 }
 
@@ -106,7 +106,7 @@ void nlopt_case(benchmark::State& state, const char* algorithm, bool global, boo
     o.seed.roll = 0.2;
     o.closed_form_seed = false;
   } else {
-    for (int k = 0; k < n + 2; ++k) target.emplace_back(3 * std::cos(k * 20 * kDeg), 3 * std::sin(k * 20 * kDeg), 0.3 * k);
+    for (int k = 0; k < n + 2; ++k) target.emplace_back(3 * std::cos(to_radians(k * 20)), 3 * std::sin(to_radians(k * 20)), 0.3 * k);
     o.seed.theta_samples = 8;
     o.seed.roll_samples = 24;
   }

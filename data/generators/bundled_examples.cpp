@@ -6,6 +6,7 @@
 #include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
 #include "data/generators/waterbomb.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::generators {
 
@@ -13,19 +14,19 @@ std::vector<std::pair<std::string, CreasePattern>> bundled_examples() {
   std::vector<std::pair<std::string, CreasePattern>> out;
   MiuraParams miura;
   miura.rows = miura.cols = 4;
-  miura.alpha = rad(60);
+  miura.alpha = to_radians(60);
   out.emplace_back("miura_4x4_alpha60", miura_ori(miura));
   // A larger Miura-ori carrying its closed-form folded state (straight creases at 100 deg),
   // so the report shows a folded sheet and the closure mismatch of the closed form.
   MiuraParams folded = miura;
   folded.rows = folded.cols = 12;
   CreasePattern folded_miura = miura_ori(folded);
-  folded_miura.fold_angles = miura_fold_angles(folded_miura, folded, rad(100));
+  folded_miura.fold_angles = miura_fold_angles(folded_miura, folded, to_radians(100));
   folded_miura.extra["file_title"] = "Miura-ori 12x12, alpha 60 deg, folded (straight creases 100 deg)";
   out.emplace_back("miura_12x12_folded", std::move(folded_miura));
   MiuraParams perturbed;
   perturbed.rows = perturbed.cols = 3;
-  perturbed.alpha = rad(60);
+  perturbed.alpha = to_radians(60);
   perturbed.perturbation = 0.05;
   perturbed.seed = 7;
   out.emplace_back("miura_3x3_perturbed", miura_ori(perturbed));
@@ -34,11 +35,11 @@ std::vector<std::pair<std::string, CreasePattern>> bundled_examples() {
   // (straight creases at 90 deg); checked from that state with the SE(3) hole closure.
   MiuraTubeParams tube;
   tube.rows = 6;
-  tube.alpha = rad(60);
+  tube.alpha = to_radians(60);
   out.emplace_back("miura_tube_6_alpha60", miura_tube(tube));
 
   SquareTwistParams twist;
-  twist.twist = rad(30);
+  twist.twist = to_radians(30);
   for (auto type : {SquareTwistType::Type1, SquareTwistType::Type2, SquareTwistType::Type3, SquareTwistType::Type4})
     out.emplace_back(std::string("square_twist_30_") + to_string(type), square_twist(twist, type));
   for (auto type : {SquareTwistModifiedType::Type1M, SquareTwistModifiedType::Type2M})

@@ -5,12 +5,11 @@
 
 #include "data/generators/generator_common.hpp"
 #include "data/generators/parallelogram_lattice.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::generators {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Lattice directions from a node.
 enum Dir { PlusI, PlusJ, MinusI, MinusJ };
@@ -153,10 +152,10 @@ CreasePattern corrugated_unit(CorrugatedUnit unit, const CorrugatedParams& param
   const double al = params.alpha, be = params.beta;
   require(std::isfinite(al) && al > kPi / 2 && al < kPi, "alpha",
           "must lie strictly between 90 and 180 deg (gamma = 180 - alpha is the smallest sector), got " +
-              std::to_string(deg(al)) + " deg");
+              std::to_string(to_degrees(al)) + " deg");
   require(std::isfinite(be) && be > kPi - al && be < al, "beta",
-          "must lie strictly between 180 - alpha and alpha (gamma smallest), i.e. (" + std::to_string(180 - deg(al)) +
-              ", " + std::to_string(deg(al)) + ") deg, got " + std::to_string(deg(be)) + " deg");
+          "must lie strictly between 180 - alpha and alpha (gamma smallest), i.e. (" + std::to_string(180 - to_degrees(al)) +
+              ", " + std::to_string(to_degrees(al)) + ") deg, got " + std::to_string(to_degrees(be)) + " deg");
   require(std::isfinite(params.a) && params.a > 0, "a", "must be positive");
   require(std::isfinite(params.b) && params.b > 0, "b", "must be positive");
   require(interior.size() == 12, "assignment",
@@ -193,8 +192,8 @@ CreasePattern corrugated_unit(CorrugatedUnit unit, const CorrugatedParams& param
   for (const auto& v : vs) names[std::string(1, v.name)] = v.vertex;
   g["vertices"] = names;
   char title[200];
-  std::snprintf(title, sizeof title, "Double-corrugated unit %s, alpha %g deg, beta %g deg", to_string(unit), deg(al),
-                deg(be));
+  std::snprintf(title, sizeof title, "Double-corrugated unit %s, alpha %g deg, beta %g deg", to_string(unit), to_degrees(al),
+                to_degrees(be));
   return finish_pattern(std::move(p), title, "assignment " + assignment_letters(interior) + " (seed 003 §3.2)", g);
 }
 

@@ -2,9 +2,9 @@
 
 #include <cctype>
 #include <cmath>
-#include <numbers>
 
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
@@ -73,8 +73,6 @@ CreasePattern finish_folded_pattern(CreasePattern p, const std::string& title, c
   return p;
 }
 
-double deg(double radians) { return radians * 180.0 / std::numbers::pi; }
-double deg_rounded(double radians) { return std::round(deg(radians) * 1e9) / 1e9; }
-double rad(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double deg_rounded(double radians) { return std::round(to_degrees(radians) * 1e9) / 1e9; }
 
 }  // namespace rigidfold::generators

@@ -36,10 +36,7 @@ CreasePattern finish_pattern(CreasePattern pattern, const std::string& title, co
 CreasePattern finish_folded_pattern(CreasePattern pattern, const std::string& title, const std::string& frame_title,
                                     const nlohmann::ordered_json& generator_parameters);
 
-// Degrees <-> radians.
-double deg(double radians);
-double rad(double degrees);
-// Degrees rounded to 1e-9 (for metadata: 30, not 29.999999999999996).
+// Degrees (to_degrees, kernel/math/angle_units.hpp) rounded to 1e-9 (for metadata: 30, not 29.999999999999996).
 double deg_rounded(double radians);
 
 }  // namespace rigidfold::generators

@@ -2,16 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "data/generators/generator_common.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::generators {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 bool zigzag_is_mountain(int i) { return i % 2 == 0; }  // as miura_ori
 

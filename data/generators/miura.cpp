@@ -2,23 +2,21 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <random>
 #include <stdexcept>
 
 #include "data/generators/generator_common.hpp"
 #include "data/generators/parallelogram_lattice.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::generators {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 void check(const MiuraParams& p) {
   require(p.rows >= 1 && p.rows <= 2000, "rows", "must be between 1 and 2000, got " + std::to_string(p.rows));
   require(p.cols >= 1 && p.cols <= 2000, "cols", "must be between 1 and 2000, got " + std::to_string(p.cols));
   require(std::isfinite(p.alpha) && p.alpha > 0 && p.alpha < kPi / 2, "alpha",
-          "the acute panel angle must lie strictly between 0 and 90 deg, got " + std::to_string(deg(p.alpha)) + " deg");
+          "the acute panel angle must lie strictly between 0 and 90 deg, got " + std::to_string(to_degrees(p.alpha)) + " deg");
   require(std::isfinite(p.a) && p.a > 0, "a", "the zig-zag segment length must be positive and finite");
   require(std::isfinite(p.b) && p.b > 0, "b", "the straight segment length must be positive and finite");
   const double limit = 0.2 * std::min(p.a, p.b) * std::sin(p.alpha);
@@ -86,7 +84,7 @@ CreasePattern miura_ori(const MiuraParams& params) {
   g["perturbation"] = params.perturbation;
   if (params.perturbation > 0) g["seed"] = params.seed;
   char title[160];
-  std::snprintf(title, sizeof title, "Miura-ori %dx%d, alpha %g deg%s", params.rows, params.cols, deg(params.alpha),
+  std::snprintf(title, sizeof title, "Miura-ori %dx%d, alpha %g deg%s", params.rows, params.cols, to_degrees(params.alpha),
                 params.perturbation > 0 ? ", perturbed" : "");
   const std::string frame = params.perturbation > 0
                                 ? "interior vertices randomly perturbed (not flat-foldable); standard Miura assignment kept"

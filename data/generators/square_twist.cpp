@@ -5,12 +5,12 @@
 
 #include "data/generators/generator_common.hpp"
 #include "data/generators/parallelogram_lattice.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::generators {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using A = Assignment;
 
 A opposite(A a) { return a == A::Mountain ? A::Valley : A::Mountain; }
@@ -28,7 +28,7 @@ CreasePattern build(const SquareTwistParams& params, const std::vector<Assignmen
                     const std::string& frame_title, const std::string& type_name) {
   const double t = params.twist;
   require(std::isfinite(t) && t > 0 && t < kPi / 2, "twist",
-          "the twist angle must lie strictly between 0 and 90 deg, got " + std::to_string(deg(t)) + " deg");
+          "the twist angle must lie strictly between 0 and 90 deg, got " + std::to_string(to_degrees(t)) + " deg");
   require(std::isfinite(params.side) && params.side > 0, "side", "the central square's side must be positive");
   require(std::isfinite(params.pleat) && params.pleat > 0, "pleat", "the outer crease length must be positive");
   const bool has_diagonal = params.diagonal != SquareTwistDiagonal::None;
@@ -97,7 +97,7 @@ CreasePattern build(const SquareTwistParams& params, const std::vector<Assignmen
 
 std::string twist_title(const char* what, double t) {
   char buf[160];
-  std::snprintf(buf, sizeof buf, "Square twist %s, twist %g deg", what, deg(t));
+  std::snprintf(buf, sizeof buf, "Square twist %s, twist %g deg", what, to_degrees(t));
   return buf;
 }
 

@@ -7,12 +7,12 @@
 
 #include "data/generators/generator_common.hpp"
 #include "data/generators/parallelogram_lattice.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::generators {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using A = Assignment;
 
 A opposite(A a) { return a == A::Mountain ? A::Valley : A::Mountain; }
@@ -26,7 +26,7 @@ void check_params(const SquareTwistTessellationParams& p) {
   require(p.rows >= 1 && p.rows <= 500, "rows", "must be between 1 and 500, got " + std::to_string(p.rows));
   require(p.cols >= 1 && p.cols <= 500, "cols", "must be between 1 and 500, got " + std::to_string(p.cols));
   require(std::isfinite(t) && t > 0 && t < kPi / 2, "twist",
-          "the twist angle must lie strictly between 0 and 90 deg, got " + std::to_string(deg(t)) + " deg");
+          "the twist angle must lie strictly between 0 and 90 deg, got " + std::to_string(to_degrees(t)) + " deg");
   require(std::isfinite(p.side) && p.side > 0, "side", "the central square's side must be positive");
   const double reach = square_twist_tessellation_min_spacing(p.twist, p.side);
   require(std::isfinite(p.spacing) && p.spacing > reach * (1 + 1e-9), "spacing",
@@ -230,7 +230,7 @@ CreasePattern square_twist_tessellation(const SquareTwistTessellationParams& par
   g["sides"] = letters;
   g["sides_order"] = "per twist row by row (twist (i, j) = j * cols + i): AB BC CD DA";
   char title[160];
-  std::snprintf(title, sizeof title, "Square-twist tessellation %dx%d, twist %g deg", n, m, deg(t));
+  std::snprintf(title, sizeof title, "Square-twist tessellation %dx%d, twist %g deg", n, m, to_degrees(t));
   return finish_pattern(std::move(p), title, "explicit side letters (see rigidfold:generator.sides)", g);
 }
 

@@ -1,10 +1,10 @@
 #include "data/generators/waterbomb.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "data/generators/generator_common.hpp"
 #include "data/generators/parallelogram_lattice.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::generators {
 
@@ -13,7 +13,6 @@ CreasePattern waterbomb_base(const WaterbombParams& params) {
   require(n >= 3 && n <= 180, "n", "the number of mountain (= valley) folds must be between 3 and 180, got " +
                                        std::to_string(n));
   require(std::isfinite(params.radius) && params.radius > 0, "radius", "the sheet radius must be positive");
-  const double pi = std::numbers::pi;
   const Assignment corner = params.corners_mountain ? Assignment::Mountain : Assignment::Valley;
   const Assignment middle = params.corners_mountain ? Assignment::Valley : Assignment::Mountain;
 
@@ -22,8 +21,8 @@ CreasePattern waterbomb_base(const WaterbombParams& params) {
   p.vertices.emplace_back(0.0, 0.0, 0.0);
   for (int k = 0; k < 2 * n; ++k) {
     // Even k: midpoint of an edge (distance R cos(pi/n)); odd k: a corner (distance R).
-    const double angle = k * pi / n;
-    const double distance = (k % 2 == 0) ? params.radius * std::cos(pi / n) : params.radius;
+    const double angle = k * kPi / n;
+    const double distance = (k % 2 == 0) ? params.radius * std::cos(kPi / n) : params.radius;
     const Eigen::Vector2d x = distance * unit_vector(angle);
     p.vertices.emplace_back(x.x(), x.y(), 0.0);
   }

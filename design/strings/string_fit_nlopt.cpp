@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "design/strings/string_vertex.hpp"
+#include "kernel/math/so3.hpp"
 
 namespace rigidfold::design {
 
@@ -32,26 +33,6 @@ void curve_errors(const MiuraString& s, double theta0, const StringPose& pose, c
 namespace {
 
 using Jet3 = ceres::Jet<double, 3>;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
-// Left Jacobian of SO(3): d/dw exp([w]x) = [J_l(w) dw]x exp([w]x).
-Eigen::Matrix3d left_jacobian(const Eigen::Vector3d& w) {
-  const double t = w.norm();
-  const Eigen::Matrix3d W = skew(w);
-  if (t < 1e-6) return Eigen::Matrix3d::Identity() + 0.5 * W + W * W / 6.0;
-  return Eigen::Matrix3d::Identity() + (1 - std::cos(t)) / (t * t) * W + (t - std::sin(t)) / (t * t * t) * W * W;
-}
-
-Eigen::Matrix3d expmap(const Eigen::Vector3d& w) {
-  const double t = w.norm();
-  if (t == 0) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(t, w / t).toRotationMatrix();
-}
 
 struct Problem {
   int n = 0;
@@ -76,7 +57,7 @@ struct Problem {
     std::vector<Eigen::Matrix3d> F(n + 1), R(n);
     std::vector<std::array<Eigen::Vector3d, 3>> omega_loc(want ? n : 0);  // d R_i R_i^T per (a1, a2, theta)
     std::vector<Eigen::Vector3d> P(n + 2);
-    F[0] = expmap(w) * F_seed;
+    F[0] = so3_exp(w) * F_seed;
     P[0] = Q[0];
     for (int i = 0; i < n; ++i) {
       const double th = i % 2 == 0 ? theta0 : -theta0;
@@ -90,7 +71,7 @@ struct Problem {
           for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) dR(r, c) = Rj[3 * r + c].v[q];
           const Eigen::Matrix3d S = dR * R[i].transpose();  // skew for an exact rotation
-          omega_loc[i][q] = Eigen::Vector3d(S(2, 1) - S(1, 2), S(0, 2) - S(2, 0), S(1, 0) - S(0, 1)) / 2;
+          omega_loc[i][q] = skew_part_vector(S);
         }
       } else {
         double Rd[9];
@@ -127,7 +108,7 @@ struct Problem {
         else grad[i_theta()] += i % 2 == 0 ? g : -g;
       }
     }
-    const Eigen::Matrix3d J = left_jacobian(w);
+    const Eigen::Matrix3d J = so3_left_jacobian(w);
     const Eigen::Vector3d moment0 = Csum[1] - P[0].cross(Ssum[1]);
     for (int q = 0; q < 3; ++q) grad[i_w() + q] = s2 * J.col(q).dot(moment0);
     for (int j = 0; j <= n; ++j) grad[i_len() + j] = s2 * F[j].col(0).dot(Ssum[j + 1]);
@@ -272,7 +253,7 @@ NloptFitResult fit_string_to_curve(const std::vector<Eigen::Vector3d>& points, c
   res.string.width = 0;
   res.theta0 = x[p.i_theta()];
   res.pose.start = points[0];
-  res.pose.frame = expmap(Eigen::Vector3d(x[p.i_w()], x[p.i_w() + 1], x[p.i_w() + 2])) * p.F_seed;
+  res.pose.frame = so3_exp(Eigen::Vector3d(x[p.i_w()], x[p.i_w() + 1], x[p.i_w() + 2])) * p.F_seed;
   res.mean_segment = Lbar;
   // The theta constraint may be violated by NLopt's tolerance: the forward check is strict.
   try {

@@ -28,15 +28,16 @@
 
 #include "design/strings/miura_string.hpp"
 #include "design/strings/string_kinematics.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::design {
 
 // Fabrication bounds shared by every design method. Radians / length units.
 struct StringBounds {
-  double alpha_min = 10.0 * 3.14159265358979323846 / 180;  // alpha in [alpha_min, alpha_max]
-  double alpha_max = 80.0 * 3.14159265358979323846 / 180;
-  double theta_margin = 2.0 * 3.14159265358979323846 / 180;  // |theta_i| <= theta_limit_i - margin
-  double min_segment = 1e-3;                                  // every spine segment >= this
+  double alpha_min = to_radians(10.0);    // alpha in [alpha_min, alpha_max]
+  double alpha_max = to_radians(80.0);
+  double theta_margin = to_radians(2.0);  // |theta_i| <= theta_limit_i - margin
+  double min_segment = 1e-3;              // every spine segment >= this
 };
 
 struct VertexDesign {

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/math/so3.hpp"
 #include "kernel/pattern/topology.hpp"
-#include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold::design {
 

@@ -7,7 +7,7 @@
 #include <unordered_map>
 
 #include "kernel/geometry/face_placement.hpp"
-#include "kernel/vertex/vertex_closure.hpp"
+#include "kernel/math/so3.hpp"
 
 namespace rigidfold {
 namespace {

@@ -2,6 +2,8 @@
 
 #include <deque>
 
+#include "kernel/math/so3.hpp"
+
 namespace rigidfold {
 
 Eigen::Isometry3d hinge_motion(const CreasePattern& p, int e, int side, double angle) {
@@ -10,7 +12,7 @@ Eigen::Isometry3d hinge_motion(const CreasePattern& p, int e, int side, double a
   const double signed_angle = side == 0 ? angle : -angle;
   Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
   m.translate(a);
-  m.rotate(Eigen::AngleAxisd(signed_angle, d));
+  m.rotate(rotation_about(d, signed_angle));
   m.translate(-a);
   return m;
 }

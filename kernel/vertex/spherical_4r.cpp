@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernel/vertex/vertex_closure.hpp"
+#include "kernel/math/so3.hpp"
 
 namespace rigidfold {
 

@@ -13,14 +13,13 @@
 //
 // All angles are in radians. Inputs are spans so that a caller can pass a std::vector,
 // a std::array or an Eigen vector: std::span<const double>(v.data(), v.size()).
+// rot_x, rot_z, so3_log and so3_left_jacobian_inverse live in kernel/math/so3.hpp.
 #include <Eigen/Core>
 #include <span>
 
-namespace rigidfold {
+#include "kernel/math/so3.hpp"
 
-// Elementary rotations about the x and z axes.
-Eigen::Matrix3d rot_x(double angle);
-Eigen::Matrix3d rot_z(double angle);
+namespace rigidfold {
 
 // Loop product of a vertex.
 // Inputs:
@@ -30,22 +29,6 @@ Eigen::Matrix3d rot_z(double angle);
 // Throws std::invalid_argument if the sizes differ or n == 0.
 Eigen::Matrix3d vertex_loop_product(std::span<const double> sectors,
                                     std::span<const double> fold_angles);
-
-// Rotation vector (angle * unit axis) of a rotation matrix: the principal SO(3) log.
-// Inputs:
-//   R  3x3 rotation matrix (assumed orthogonal with det +1)
-// Returns phi with |phi| in [0, pi] (radians) and exp([phi]x) = R.
-// Accurate to machine precision near angle 0 (no 0/0) and near pi (the axis is taken
-// from the symmetric part of R there, where the skew part vanishes). At exactly pi the
-// sign of the axis is arbitrary, as it must be.
-Eigen::Vector3d so3_log(const Eigen::Matrix3d& R);
-
-// Inverse of the left Jacobian of SO(3) at the rotation vector phi.
-// If R = exp([phi]x) and R is perturbed on the left, exp([d]x) R = exp([phi + dphi]x),
-// then dphi = so3_left_jacobian_inverse(phi) * d to first order.
-// Closed form I - [phi]x/2 + (1/t^2 - cot(t/2)/(2t)) [phi]x^2 with t = |phi|; a series is
-// used for small t. Finite for t in [0, pi] (valid for t < 2*pi).
-Eigen::Matrix3d so3_left_jacobian_inverse(const Eigen::Vector3d& phi);
 
 // Closure residual r = log(R(rho)) (rotation vector, radians). |r| is the closure error
 // of the vertex in radians: the rotation left over after going once around the vertex.

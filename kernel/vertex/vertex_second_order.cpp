@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "kernel/vertex/vertex_closure.hpp"
+#include "kernel/math/so3.hpp"
 
 namespace rigidfold {
 
@@ -13,8 +13,7 @@ Eigen::Vector3d vertex_closure_second_derivative(std::span<const double> sectors
   if (n == 0 || fold_angles.size() != n || direction.size() != n)
     throw std::invalid_argument("vertex_closure_second_derivative: sectors, fold angles and direction need the same size > 0");
   // X = [e_x]x commutes with Rx, so d/ds Rx(rho + s t) = t X Rx and the second derivative is t^2 X^2 Rx.
-  Eigen::Matrix3d X;
-  X << 0, 0, 0, 0, 0, -1, 0, 1, 0;
+  const Eigen::Matrix3d X = skew(Eigen::Vector3d::UnitX());
   const Eigen::Matrix3d X2 = X * X;
   // Running product P and its first two derivatives in s (product rule, one factor at a time).
   Eigen::Matrix3d P = Eigen::Matrix3d::Identity(), P1 = Eigen::Matrix3d::Zero(), P2 = Eigen::Matrix3d::Zero();
@@ -26,8 +25,7 @@ Eigen::Vector3d vertex_closure_second_derivative(std::span<const double> sectors
     P1 = P1 * A + P * A1;
     P = P * A;
   }
-  const Eigen::Matrix3d W2 = 0.5 * (P2 - P2.transpose());
-  return Eigen::Vector3d(W2(2, 1), W2(0, 2), W2(1, 0));
+  return skew_part_vector(P2);
 }
 
 }  // namespace rigidfold

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 #include <nlohmann/json.hpp>
-#include <numbers>
 
+#include "kernel/math/angle_units.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 #include "tests/support/run_command.hpp"
@@ -23,14 +23,13 @@ TEST(VertexCli, S4RJsonBranchesCloseTheLoop) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["feasible"].get<bool>());
   ASSERT_EQ(j["branches"].size(), 2u);
-  const double k = std::numbers::pi / 180;
-  const std::vector<double> sectors{50 * k, 110 * k, 100 * k, 95 * k};
+  const std::vector<double> sectors{to_radians(50), to_radians(110), to_radians(100), to_radians(95)};
   for (const auto& b : j["branches"]) {
     const auto deg = b["angles_deg"].get<std::vector<double>>();
     ASSERT_EQ(deg.size(), 4u);
     EXPECT_DOUBLE_EQ(deg[0], 35.0);
     std::vector<double> rho;
-    for (double d : deg) rho.push_back(d * k);
+    for (double d : deg) rho.push_back(to_radians(d));
     // Numbers are printed with full precision: the parsed angles still close to 1e-12.
     EXPECT_LT(vertex_closure_residual(sectors, rho).norm(), 1e-12);
   }
@@ -64,16 +63,15 @@ TEST(VertexCli, MiuraJsonMatchesTheLibrary) {
     const auto r = test::run_command(test::cli() + " vertex miura --alpha1 30 --alpha2 60 --theta " + theta + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
-    const double k = std::numbers::pi / 180;
-    const MiuraVertexState st = miura_vertex(30 * k, 60 * k, std::stod(theta) * k);
+    const MiuraVertexState st = miura_vertex(to_radians(30), to_radians(60), to_radians(std::stod(theta)));
     // Full-precision output: the parsed degrees are the library's values times 180/pi.
-    EXPECT_DOUBLE_EQ(j["phi_deg"].get<double>(), st.phi / k);
-    EXPECT_DOUBLE_EQ(j["psi_deg"].get<double>(), st.psi / k);
-    EXPECT_DOUBLE_EQ(j["theta_limit_deg"].get<double>(), miura_theta_limit(30 * k, 60 * k) / k);
+    EXPECT_DOUBLE_EQ(j["phi_deg"].get<double>(), to_degrees(st.phi));
+    EXPECT_DOUBLE_EQ(j["psi_deg"].get<double>(), to_degrees(st.psi));
+    EXPECT_DOUBLE_EQ(j["theta_limit_deg"].get<double>(), to_degrees(miura_theta_limit(to_radians(30), to_radians(60))));
     ASSERT_EQ(j["fold_angles_deg"].size(), 4u);
     for (int i = 0; i < 4; ++i) {
       EXPECT_EQ(j["fold_angles_deg"][i]["crease"].get<std::string>(), std::string(kMiuraCreaseNames[i]));
-      EXPECT_DOUBLE_EQ(j["fold_angles_deg"][i]["fold_angle_deg"].get<double>(), st.fold_angles[i] / k);
+      EXPECT_DOUBLE_EQ(j["fold_angles_deg"][i]["fold_angle_deg"].get<double>(), to_degrees(st.fold_angles[i]));
     }
     EXPECT_LT(j["closure_residual_rad"].get<double>(), 1e-12);
   }

@@ -8,7 +8,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "data/generators/miura.hpp"
 #include "data/generators/miura_tube.hpp"
@@ -16,6 +15,7 @@
 #include "kernel/closure/hole_closure.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/continuation.hpp"
@@ -24,7 +24,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 ClosureSystem tube_system(const CreasePattern& p, const Topology& t) {
   ClosureOptions o;
@@ -61,9 +60,9 @@ TEST(MiuraTube, HasOneDofOnlyWithTheHoleClosure) {
       for (double fold_deg : {60.0, 120.0}) {
         generators::MiuraTubeParams tp;
         tp.rows = rows;
-        tp.alpha = alpha_deg * kPi / 180;
+        tp.alpha = to_radians(alpha_deg);
         tp.b = 1.3;
-        tp.fold = fold_deg * kPi / 180;
+        tp.fold = to_radians(fold_deg);
         const CreasePattern p = generators::miura_tube(tp);
         const Topology t = build_topology(p);
         const ClosureSystem sys = tube_system(p, t);
@@ -89,7 +88,7 @@ TEST(MiuraTube, HasOneDofOnlyWithTheHoleClosure) {
 TEST(MiuraTube, TracedMotionIsTheMiuraModeOnBothStrips) {
   generators::MiuraTubeParams tp;
   tp.rows = 4;
-  tp.alpha = 55 * kPi / 180;
+  tp.alpha = to_radians(55);
   tp.a = 1.0;
   tp.b = 1.4;
   tp.fold = 1.2;
@@ -154,7 +153,7 @@ TEST(MiuraTube, TracedMotionIsTheMiuraModeOnBothStrips) {
   }
   std::printf("[MiuraTube] %d points, straight crease %.1f..%.1f deg: residual %.2g, vs Miura mode %.2g rad, "
               "mirror %.2g rad, closure mismatch %.2g\n",
-              points, lo * 180 / kPi, hi * 180 / kPi, worst_residual, worst_mode, worst_mirror, worst_mismatch);
+              points, to_degrees(lo), to_degrees(hi), worst_residual, worst_mode, worst_mirror, worst_mismatch);
   EXPECT_GE(points, 10);
   EXPECT_LE(lo, 0.16);
   EXPECT_GE(hi, 2.9);

@@ -18,8 +18,8 @@ using generators::CorrugatedUnit;
 
 CorrugatedParams angles(double alpha_deg, double beta_deg) {
   CorrugatedParams p;
-  p.alpha = rad(alpha_deg);
-  p.beta = rad(beta_deg);
+  p.alpha = to_radians(alpha_deg);
+  p.beta = to_radians(beta_deg);
   p.a = 1.1;
   p.b = 0.9;
   return p;
@@ -36,7 +36,7 @@ TEST(GeneratorCorrugated, SectorsFollowVertexTypes) {
       EXPECT_EQ(p.num_faces(), 9);
       const Topology topo = build_topology(p);
       ASSERT_EQ(topo.interior_vertices.size(), 4u);
-      const double a = rad(al), b = rad(be), g = kPi - a, d = kPi - b;
+      const double a = to_radians(al), b = to_radians(be), g = kPi - a, d = kPi - b;
       for (const auto& vx : generators::corrugated_vertices(unit)) {
         const Fan& fan = topo.stars[vx.vertex].fans[0];
         ASSERT_EQ(fan.edges.size(), 4u);
@@ -138,10 +138,10 @@ TEST(GeneratorCorrugated, QWithRightBetaIsASquareTwist) {
   for (const auto& v : vs) {
     std::vector<double> s = topo.stars[v.vertex].fans[0].sectors;
     std::sort(s.begin(), s.end());
-    EXPECT_NEAR(s[0], rad(30), 1e-12);
+    EXPECT_NEAR(s[0], to_radians(30), 1e-12);
     EXPECT_NEAR(s[1], kPi / 2, 1e-12);
     EXPECT_NEAR(s[2], kPi / 2, 1e-12);
-    EXPECT_NEAR(s[3], rad(150), 1e-12);
+    EXPECT_NEAR(s[3], to_radians(150), 1e-12);
   }
 }
 

@@ -11,21 +11,19 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <numbers>
 #include <optional>
 #include <queue>
 #include <unistd.h>
 #include <string>
 #include <vector>
 
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::test {
 
-constexpr double kPi = std::numbers::pi;
-inline double rad(double d) { return d * kPi / 180; }
 
 inline Eigen::Matrix3d rx(double a) {
   Eigen::Matrix3d m;

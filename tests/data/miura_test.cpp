@@ -16,7 +16,7 @@ MiuraParams params(int rows, int cols, double alpha_deg) {
   MiuraParams p;
   p.rows = rows;
   p.cols = cols;
-  p.alpha = rad(alpha_deg);
+  p.alpha = to_radians(alpha_deg);
   p.a = 1.25;
   p.b = 0.75;
   return p;
@@ -43,7 +43,7 @@ TEST(GeneratorMiura, CountsDegreesAndLayout) {
       EXPECT_NEAR(d.x(), 0.75, 1e-15);
     } else {  // zig-zag: length a at +-alpha from the y axis's side
       EXPECT_NEAR(d.norm(), 1.25, 1e-14);
-      EXPECT_NEAR(std::fabs(d.x()), 1.25 * std::cos(rad(60)), 1e-14);
+      EXPECT_NEAR(std::fabs(d.x()), 1.25 * std::cos(to_radians(60)), 1e-14);
     }
   }
 }
@@ -57,17 +57,17 @@ TEST(GeneratorMiura, SectorsAndFlatFoldability) {
       const Fan& fan = topo.stars[v].fans[0];
       std::vector<double> s = fan.sectors;
       std::sort(s.begin(), s.end());
-      EXPECT_NEAR(s[0], rad(alpha), 1e-12);
-      EXPECT_NEAR(s[1], rad(alpha), 1e-12);
-      EXPECT_NEAR(s[2], kPi - rad(alpha), 1e-12);
-      EXPECT_NEAR(s[3], kPi - rad(alpha), 1e-12);
+      EXPECT_NEAR(s[0], to_radians(alpha), 1e-12);
+      EXPECT_NEAR(s[1], to_radians(alpha), 1e-12);
+      EXPECT_NEAR(s[2], kPi - to_radians(alpha), 1e-12);
+      EXPECT_NEAR(s[3], kPi - to_radians(alpha), 1e-12);
       EXPECT_NEAR(kawasaki_residual(topo, v), 0.0, 1e-12);
       const auto [m, vv] = mountains_valleys(p, topo, v);
       EXPECT_EQ(std::abs(m - vv), 2);
       // The odd crease is the straight crease between the two acute sectors.
       for (int k = 0; k < 4; ++k) {
-        const bool between_acute = std::fabs(fan.sectors[(k + 3) % 4] - rad(alpha)) < 1e-9 &&
-                                   std::fabs(fan.sectors[k] - rad(alpha)) < 1e-9;
+        const bool between_acute = std::fabs(fan.sectors[(k + 3) % 4] - to_radians(alpha)) < 1e-9 &&
+                                   std::fabs(fan.sectors[k] - to_radians(alpha)) < 1e-9;
         int same = 0;
         for (int j = 0; j < 4; ++j) same += p.assignments[fan.edges[j]] == p.assignments[fan.edges[k]];
         EXPECT_EQ(same == 1, between_acute) << "alpha " << alpha << " vertex " << v;
@@ -172,7 +172,7 @@ TEST(GeneratorMiura, BadParametersNameTheParameter) {
     return std::string("no error");
   };
   MiuraParams mp = params(2, 2, 60);
-  mp.alpha = rad(90);
+  mp.alpha = to_radians(90);
   EXPECT_EQ(place_of(mp), "alpha");
   mp = params(0, 2, 60);
   EXPECT_EQ(place_of(mp), "rows");

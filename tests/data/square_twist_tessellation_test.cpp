@@ -34,7 +34,7 @@ SquareTwistTessellationParams params(int rows, int cols, double twist_deg, Layou
   SquareTwistTessellationParams p;
   p.rows = rows;
   p.cols = cols;
-  p.twist = rad(twist_deg);
+  p.twist = to_radians(twist_deg);
   p.side = 1.3;
   p.spacing = 2.6;  // > 1.3 * sqrt(2), valid for every twist angle
   p.layout = layout;
@@ -43,7 +43,7 @@ SquareTwistTessellationParams params(int rows, int cols, double twist_deg, Layou
 
 std::string name(const SquareTwistTessellationParams& p) {
   return std::to_string(p.rows) + "x" + std::to_string(p.cols) + " " + generators::to_string(p.layout) + " t " +
-         std::to_string(std::lround(p.twist * 180 / kPi)) + " deg";
+         std::to_string(std::lround(to_degrees(p.twist))) + " deg";
 }
 
 // mu = tan(pi/4 - t/2): ratio of the two crease magnitudes at every twist vertex.
@@ -77,7 +77,7 @@ TEST(GeneratorSquareTwistTessellation, CountsGeometryAndValidSheet) {
           // Sectors are those of the single twist: {pi/2, pi/2, pi - t, t}.
           std::vector<double> s = fan.sectors;
           std::sort(s.begin(), s.end());
-          const double tr = rad(t);
+          const double tr = to_radians(t);
           std::vector<double> expected{tr, kPi / 2, kPi / 2, kPi - tr};
           std::sort(expected.begin(), expected.end());
           for (int i = 0; i < 4; ++i) EXPECT_NEAR(s[i], expected[i], 1e-12) << where;

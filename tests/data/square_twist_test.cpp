@@ -16,7 +16,7 @@ constexpr Assignment M = Assignment::Mountain, V = Assignment::Valley;
 
 SquareTwistParams params(double twist_deg) {
   SquareTwistParams p;
-  p.twist = rad(twist_deg);
+  p.twist = to_radians(twist_deg);
   p.side = 1.3;
   p.pleat = 0.8;
   return p;
@@ -49,7 +49,7 @@ TEST(GeneratorSquareTwist, CountsSectorsAndTwistSide) {
       // CCW from the side to the next vertex: pi/2, pi - t, pi/2, t.
       const int i0 = position(fan, edge_between(p, k, (k + 1) % 4));
       ASSERT_GE(i0, 0);
-      const double expected[4] = {kPi / 2, kPi - rad(t), kPi / 2, rad(t)};
+      const double expected[4] = {kPi / 2, kPi - to_radians(t), kPi / 2, to_radians(t)};
       for (int j = 0; j < 4; ++j) EXPECT_NEAR(fan.sectors[(i0 + j) % 4], expected[j], 1e-12) << "t " << t << " v " << k;
       EXPECT_EQ(fan.edges[(i0 + 1) % 4], edge_between(p, k, (k + 3) % 4));  // side to the previous vertex
       EXPECT_EQ(fan.edges[(i0 + 2) % 4], 4 + 2 * k);                         // o_a
@@ -174,7 +174,7 @@ TEST(GeneratorSquareTwist, ModifiedTypesFollowSeed001Section3) {
       const Fan& fan = topo.stars[v].fans[0];
       ASSERT_EQ(fan.edges.size(), 5u);
       const int i0 = position(fan, edge_between(p, v, (v + 1) % 4));  // twist side
-      const double t = rad(30);
+      const double t = to_radians(30);
       const double expected_ccw[5] = {kPi / 4, kPi / 4, kPi - t, kPi / 2, t};  // twist side, diag, prev side, o_a, o_b
       for (int j = 0; j < 5; ++j) EXPECT_NEAR(fan.sectors[(i0 + j) % 5], expected_ccw[j], 1e-12);
       EXPECT_EQ(fan.edges[(i0 + 1) % 5], 12);

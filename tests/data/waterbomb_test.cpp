@@ -68,7 +68,7 @@ TEST(GeneratorWaterbomb, Seed004SymmetricFoldCloses) {
     const Topology topo = build_topology(p);
     const double alpha = kPi / n, beta = 2 * kPi / n;
     for (double theta_deg : {20.0, 45.0, 70.0, 89.0}) {
-      const double th = rad(theta_deg);
+      const double th = to_radians(theta_deg);
       const double d = std::acos(std::cos(th) * std::cos(th) + std::sin(th) * std::sin(th) * std::cos(beta));
       const double gm = -std::fabs(kPi - 2 * th);
       const double gv = 2 * (std::acos(std::tan(d / 2) / std::tan(th)) + std::acos(std::tan(d / 2) / std::tan(alpha))) - kPi;

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include "design/strings/miura_string.hpp"
@@ -12,20 +11,20 @@
 #include "design/strings/string_inverse.hpp"
 #include "design/strings/string_kinematics.hpp"
 #include "design/strings/string_verify.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::design {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 
 MiuraString random_string(int n, std::uint64_t seed, double lo_deg = 30, double hi_deg = 70) {
-  return random_miura_string(n, seed, lo_deg * kDeg, hi_deg * kDeg, 0.5);
+  return random_miura_string(n, seed, to_radians(lo_deg), to_radians(hi_deg), 0.5);
 }
 
 std::vector<Eigen::Vector3d> helix(double radius, double rise, double step_deg, int count) {
   std::vector<Eigen::Vector3d> p;
   for (int k = 0; k < count; ++k)
-    p.emplace_back(radius * std::cos(k * step_deg * kDeg), radius * std::sin(k * step_deg * kDeg), rise * k);
+    p.emplace_back(radius * std::cos(to_radians(k * step_deg)), radius * std::sin(to_radians(k * step_deg)), rise * k);
   return p;
 }
 
@@ -105,7 +104,7 @@ TEST(StringCeres, TrajectoriesFromAGenericStartRecoverTheString) {
 
 TEST(StringCeres, NoisyAndOutOfBoundsTrajectoriesGiveTheBestFitAndTheBindingBound) {
   MiuraString s = random_string(4, 3, 30, 60);
-  s.alpha1[2] = 5 * kDeg;  // below the default alpha_min = 10 deg
+  s.alpha1[2] = to_radians(5);  // below the default alpha_min = 10 deg
   s.width = 0.5 * max_string_width(s);
   TrajectoryTarget t = trajectories_of(s, {0.1, 0.25, 0.4});
   std::mt19937_64 rng(5);

@@ -10,6 +10,7 @@
 #include "design/strings/string_kinematics.hpp"
 #include "design/strings/string_verify.hpp"
 #include "design/strings/string_vertex.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
@@ -17,9 +18,8 @@
 namespace rigidfold::design {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 
-MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, 35 * kDeg, 75 * kDeg, 0.9); }
+MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, to_radians(35), to_radians(75), 0.9); }
 
 double min_limit(const MiuraString& s) {
   double m = 10;
@@ -30,7 +30,7 @@ double min_limit(const MiuraString& s) {
 TEST(StringVertex, ClosesTheLoopAndMatchesTheSeedFormulas) {
   // Paper's example alpha1 = 30, alpha2 = 60 deg, and other vertices over their range.
   for (const auto& [a1d, a2d] : {std::pair{30.0, 60.0}, {60.0, 30.0}, {45.0, 45.0}, {20.0, 70.0}, {80.0, 50.0}}) {
-    const double a1 = a1d * kDeg, a2 = a2d * kDeg;
+    const double a1 = to_radians(a1d), a2 = to_radians(a2d);
     const double lim = string_theta_limit(a1, a2);
     for (double frac : {-0.99, -0.5, -1e-6, 1e-9, 0.1, 0.5, 0.9, 0.999}) {
       const double th = frac * lim;
@@ -64,7 +64,7 @@ TEST(StringVertex, ClosesTheLoopAndMatchesTheSeedFormulas) {
 
 TEST(StringVertex, TemplatedFrameAgreesWithTheKernelClosedForm) {
   std::mt19937_64 rng(21);
-  std::uniform_real_distribution<double> alpha(2 * kDeg, 88 * kDeg), frac(-0.999, 0.999);
+  std::uniform_real_distribution<double> alpha(to_radians(2), to_radians(88)), frac(-0.999, 0.999);
   for (int k = 0; k < 1000; ++k) {
     const double a1 = alpha(rng), a2 = alpha(rng), th = frac(rng) * miura_theta_limit(a1, a2);
     double R[9], phi, psi;
@@ -81,9 +81,9 @@ TEST(StringVertex, TemplatedFrameAgreesWithTheKernelClosedForm) {
 }
 
 TEST(StringVertex, ThetaLimitIsWhereAPeripheralCreaseFoldsFlat) {
-  const double a1 = 30 * kDeg, a2 = 60 * kDeg;
+  const double a1 = to_radians(30), a2 = to_radians(60);
   const double lim = string_theta_limit(a1, a2);
-  EXPECT_NEAR(lim / kDeg, 54.735610317245346, 1e-9);  // 90 - acos(1/3)/2
+  EXPECT_NEAR(to_degrees(lim), 54.735610317245346, 1e-9);  // 90 - acos(1/3)/2
   const StringVertexState near = string_vertex_state(a1, a2, lim * (1 - 1e-9));
   EXPECT_NEAR(std::fabs(near.rho_b), std::numbers::pi, 1e-3);
   EXPECT_LT(std::fabs(string_vertex_state(a1, a2, 0.9 * lim).rho_b), std::numbers::pi - 0.1);
@@ -91,7 +91,7 @@ TEST(StringVertex, ThetaLimitIsWhereAPeripheralCreaseFoldsFlat) {
 
 TEST(StringVertex, InverseRecoversTheAlphasForGivenTheta) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> alpha(5 * kDeg, 85 * kDeg), frac(-0.98, 0.98);
+  std::uniform_real_distribution<double> alpha(to_radians(5), to_radians(85)), frac(-0.98, 0.98);
   for (int k = 0; k < 2000; ++k) {
     const double a1 = alpha(rng), a2 = alpha(rng), th = frac(rng) * string_theta_limit(a1, a2);
     if (std::fabs(th) < 1e-3) continue;

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/vertex/flat_foldable_multipliers.hpp"
@@ -19,7 +19,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // One generic flat-foldable degree-4 vertex at the origin in a square sheet: creases at
 // 0, 70, 180, 290 degrees (sectors 70, 110, 110, 70: opposite sectors sum to 180).
@@ -90,7 +89,7 @@ TEST(FoldCli, WritesFoldedFrameAndObjAndReportsMismatch) {
   const Fan& fan = t.stars[0].fans[0];
   const auto a = flat_fold_angles({fan.sectors[0], fan.sectors[1], fan.sectors[2], fan.sectors[3]}, FlatFoldMode::kEqual02, 1.0);
   nlohmann::json angles = nlohmann::json::object();
-  for (int i = 0; i < 4; ++i) angles[std::to_string(fan.edges[i])] = a[i] * 180 / kPi;
+  for (int i = 0; i < 4; ++i) angles[std::to_string(fan.edges[i])] = to_degrees(a[i]);
   std::ofstream(dir / "angles.json") << angles.dump();
   const auto r = test::run_command(test::cli() + " fold " + (dir / "p.fold").string() + " --angles " + (dir / "angles.json").string() +
                                    " --out " + (dir / "f.fold").string() + " --obj " + (dir / "f.obj").string() + " --json");
@@ -102,7 +101,7 @@ TEST(FoldCli, WritesFoldedFrameAndObjAndReportsMismatch) {
   const auto& frame = f.extra["file_frames"].back();
   EXPECT_EQ(frame["frame_classes"][0], "foldedForm");
   EXPECT_EQ(frame["vertices_coords"].size(), 9u);
-  EXPECT_NEAR(frame["edges_foldAngle"][fan.edges[0]].get<double>(), a[0] * 180 / kPi, 1e-12);
+  EXPECT_NEAR(frame["edges_foldAngle"][fan.edges[0]].get<double>(), to_degrees(a[0]), 1e-12);
   EXPECT_TRUE(std::filesystem::exists(dir / "f.obj"));
 
   // Bad angles: exit 2, message names the key, and no output file appears.

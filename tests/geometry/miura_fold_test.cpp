@@ -3,11 +3,11 @@
 // placed faces reproduce the closed-form fold angles when measured back from the geometry.
 #include <gtest/gtest.h>
 
-#include <numbers>
 
 #include "data/generators/miura.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
@@ -19,7 +19,7 @@ TEST(MiuraFold, ClosedFormAnglesPlaceFacesWithoutMismatch) {
       generators::MiuraParams m;
       m.rows = n;
       m.cols = n + 1;
-      m.alpha = alpha_deg * std::numbers::pi / 180;
+      m.alpha = to_radians(alpha_deg);
       m.a = 1.0;
       m.b = 1.7;
       const CreasePattern p = generators::miura_ori(m);

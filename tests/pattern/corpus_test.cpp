@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/flat_foldability.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -18,7 +19,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
 
@@ -96,7 +96,7 @@ TEST(CorpusSquareTwist, FoldedReferenceGivesTheDesignSectorAngles) {
     ASSERT_EQ(s.size(), 4u);
     const int k = static_cast<int>(std::min_element(s.begin(), s.end()) - s.begin());
     const double expected[4] = {45, 90, 135, 90};
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(s[(k + i) % 4] * kDeg, expected[i], 3e-4) << "vertex " << v;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(to_degrees(s[(k + i) % 4]), expected[i], 3e-4) << "vertex " << v;
   }
   // Its measured fold angles close every vertex loop to the file's precision, and the
   // signs follow the file's M/V assignment.

@@ -4,8 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
-#include <numbers>
 
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -32,11 +32,11 @@ TEST(FoldIo, RoundTripKeepsModelledAndUnknownKeys) {
   ASSERT_EQ(a.num_edges(), 5);
   ASSERT_EQ(a.num_faces(), 2);
   EXPECT_FALSE(a.faces_derived);
-  EXPECT_NEAR(*a.fold_angles[4], 37.5 * std::numbers::pi / 180, 1e-16);
+  EXPECT_NEAR(*a.fold_angles[4], to_radians(37.5), 1e-16);
 
   const std::string text = write_fold_string(a);
   const CreasePattern b = parse_fold(text, "roundtrip.fold");
-  test::expect_same_pattern(a, b, 4e-16 * 37.5 * std::numbers::pi / 180);
+  test::expect_same_pattern(a, b, 4e-16 * to_radians(37.5));
   EXPECT_EQ(b.extra["vendor:custom"]["keep"][2], 3);
   EXPECT_EQ(b.extra["file_frames"][0]["frame_classes"][0], "foldedForm");
   // A second round trip is byte-identical: writing is a fixed point.

@@ -13,12 +13,12 @@
 #include <Eigen/SparseCore>
 #include <cmath>
 #include <iostream>
-#include <numbers>
 #include <random>
 
 #include "data/generators/square_twist.hpp"
 #include "kernel/closure/closure_second_order.hpp"
 #include "kernel/closure/closure_system.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/bifurcation.hpp"
 #include "kernel/solve/continuation.hpp"
@@ -29,7 +29,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 Eigen::VectorXd fd_second_derivative(const ClosureSystem& sys, const Eigen::VectorXd& x, const Eigen::VectorXd& t) {
   const double h = 1e-5;

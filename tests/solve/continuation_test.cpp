@@ -1,12 +1,12 @@
 // Pseudo-arclength continuation traces the Miura mode from a small fold to 170 degrees on the
 // straight creases; every point agrees with the closed form.
+#include "kernel/math/angle_units.hpp"
 #include "kernel/solve/continuation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <iostream>
-#include <numbers>
 
 #include "data/generators/miura.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -31,7 +31,7 @@ TEST(SolverContinuation, MiuraTracedTo170DegreesMatchesClosedForm) {
     if (kinds[e] == generators::MiuraCrease::Straight && p.assignments[e] == Assignment::Valley) driver = k;
   }
   ASSERT_GE(driver, 0);
-  const double start = 0.05, target = 170.0 * std::numbers::pi / 180;
+  const double start = 0.05, target = to_radians(170.0);
   const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
   const Eigen::VectorXd dir = sys.unknowns_from_edges(miura_edge_angles(p, m, start + 1e-3)) - x0;
   ContinuationOptions opt;
@@ -89,7 +89,7 @@ TraceCheck trace_miura(int n, double target_deg, double steps, FactorizationReus
     if (kinds[e] == generators::MiuraCrease::Straight && p.assignments[e] == Assignment::Valley) driver = k;
   }
   EXPECT_GE(driver, 0);
-  const double start = 5 * std::numbers::pi / 180, target = target_deg * std::numbers::pi / 180;
+  const double start = to_radians(5), target = to_radians(target_deg);
   const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
   const Eigen::VectorXd dir = sys.unknowns_from_edges(miura_edge_angles(p, m, start + 1e-3)) - x0;
   ContinuationOptions opt;

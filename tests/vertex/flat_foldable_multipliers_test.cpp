@@ -14,7 +14,6 @@ namespace {
 
 using test::angle_distance;
 using test::as_span;
-using test::kPi;
 using test::uniform;
 
 constexpr FlatFoldMode kModes[] = {FlatFoldMode::kEqual13, FlatFoldMode::kEqual02};

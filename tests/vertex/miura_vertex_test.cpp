@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "kernel/math/so3.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 #include "tests/vertex/miura_reference.hpp"
@@ -22,10 +23,8 @@ namespace rigidfold {
 namespace {
 
 using test::as_span;
-using test::kPi;
 using test::Real50;
 
-constexpr double kDeg = kPi / 180.0;
 
 // 400 digits for theta ~ 1e-150..1e-160, where the reference's 1 - |m|^2 ~ theta^2 would
 // swallow all 50 digits of Real50.
@@ -69,7 +68,7 @@ struct Worst {
   }
 };
 std::ostream& operator<<(std::ostream& os, const Worst& w) {
-  return os << w.err << " at alpha1 = " << w.a1 / kDeg << " deg, alpha2 = " << w.a2 / kDeg << " deg, theta = " << w.th
+  return os << w.err << " at alpha1 = " << to_degrees(w.a1) << " deg, alpha2 = " << to_degrees(w.a2) << " deg, theta = " << w.th
             << " rad";
 }
 
@@ -84,22 +83,22 @@ void expect_matches_reference(double a1, double a2, double th, double tol, Worst
   const MiuraVertexState st = miura_vertex(a1, a2, th);
   const auto ref = test::miura_reference<T>(a1, a2, th);
   const double ephi = rel_error(st.phi, ref.phi);
-  EXPECT_LE(ephi, tol) << "phi at " << a1 / kDeg << ", " << a2 / kDeg << ", " << th;
+  EXPECT_LE(ephi, tol) << "phi at " << to_degrees(a1) << ", " << to_degrees(a2) << ", " << th;
   wphi.update(ephi, a1, a2, th);
   double edir = 0.0;
   for (int i = 0; i < 3; ++i) edir = std::max(edir, static_cast<double>(abs(T(st.spinal_out[i]) - ref.a[i])));
-  EXPECT_LE(edir, 1e-15) << "a_hat at " << a1 / kDeg << ", " << a2 / kDeg << ", " << th;
+  EXPECT_LE(edir, 1e-15) << "a_hat at " << to_degrees(a1) << ", " << to_degrees(a2) << ", " << th;
   if (wdir) wdir->update(edir, a1, a2, th);
   if (a1 == a2) {
     EXPECT_EQ(st.psi, 0.0);
   } else if (abs(ref.a[0]) > T(1e-8)) {
     const double epsi = rel_error(st.psi, ref.psi);
-    EXPECT_LE(epsi, tol) << "psi at " << a1 / kDeg << ", " << a2 / kDeg << ", " << th;
+    EXPECT_LE(epsi, tol) << "psi at " << to_degrees(a1) << ", " << to_degrees(a2) << ", " << th;
     wpsi.update(epsi, a1, a2, th);
   }
   for (int i = 0; i < 4; ++i) {
     const double e = rel_error(st.fold_angles[i], ref.rho[i]);
-    EXPECT_LE(e, tol) << "fold angle " << i << " at " << a1 / kDeg << ", " << a2 / kDeg << ", " << th;
+    EXPECT_LE(e, tol) << "fold angle " << i << " at " << to_degrees(a1) << ", " << to_degrees(a2) << ", " << th;
     wrho.update(e, a1, a2, th);
   }
 }
@@ -108,7 +107,7 @@ TEST(MiuraVertex, MatchesHighPrecisionReferenceOverTheDomain) {
   Worst wphi, wpsi, wrho, wdir;
   for (int i1 = 5; i1 <= 85; i1 += 5) {
     for (int i2 = 5; i2 <= 85; i2 += 5) {
-      const double a1 = i1 * kDeg, a2 = i2 * kDeg;
+      const double a1 = to_radians(i1), a2 = to_radians(i2);
       const double limit = miura_theta_limit(a1, a2);
       for (double th : theta_samples(limit)) {
         expect_matches_reference(a1, a2, th, 1e-13, wphi, wpsi, wrho, &wdir);
@@ -125,27 +124,27 @@ TEST(MiuraVertex, MatchesReferenceInTheHardCorners) {
   struct Case {
     double a1, a2, th;
   };
-  const double near_sym = 60 * kDeg + 1e-8;
+  const double near_sym = to_radians(60) + 1e-8;
   const std::vector<Case> cases{
-      {60 * kDeg, 60 * kDeg, kPi / 2 - 1e-9},                                    // cos theta -> 0, symmetric
-      {30 * kDeg, 30 * kDeg, kPi / 2},                                           // exactly at the symmetric limit
-      {60 * kDeg, near_sym, miura_theta_limit(60 * kDeg, near_sym) - 1e-9},      // cos theta ~ 1e-4, q ~ 1e-8
-      {45 * kDeg, 45 * kDeg + 1e-12, 1.2},                                       // alpha1 ~ alpha2: tiny psi
-      {1e-6, 30 * kDeg, 0.5},                                                    // alpha -> 0
-      {30 * kDeg, 1e-6, -0.5},
-      {kPi / 2 - 1e-7, 85 * kDeg, 0.3},                                          // alpha -> 90 deg
-      {kPi / 2 - 1e-7, kPi / 2 - 2e-7, 1.0},                                     // both -> 90 deg, phi -> pi
-      {70 * kDeg, 20 * kDeg, -1e-12},                                            // near-flat
-      {45 * kDeg, 75 * kDeg, miura_theta_limit(45 * kDeg, 75 * kDeg) - 1e-3},    // a_x -> 0 at the limit
+      {to_radians(60), to_radians(60), kPi / 2 - 1e-9},                                            // cos theta -> 0, symmetric
+      {to_radians(30), to_radians(30), kPi / 2},                                                   // exactly at the symmetric limit
+      {to_radians(60), near_sym, miura_theta_limit(to_radians(60), near_sym) - 1e-9},              // cos theta ~ 1e-4, q ~ 1e-8
+      {to_radians(45), to_radians(45) + 1e-12, 1.2},                                               // alpha1 ~ alpha2: tiny psi
+      {1e-6, to_radians(30), 0.5},                                                                 // alpha -> 0
+      {to_radians(30), 1e-6, -0.5},
+      {kPi / 2 - 1e-7, to_radians(85), 0.3},                                                       // alpha -> 90 deg
+      {kPi / 2 - 1e-7, kPi / 2 - 2e-7, 1.0},                                                       // both -> 90 deg, phi -> pi
+      {to_radians(70), to_radians(20), -1e-12},                                                    // near-flat
+      {to_radians(45), to_radians(75), miura_theta_limit(to_radians(45), to_radians(75)) - 1e-3},  // a_x -> 0 at the limit
   };
   for (const auto& c : cases) expect_matches_reference(c.a1, c.a2, c.th, 1e-13, wphi, wpsi, wrho);
   // Deep near-flat: psi ~ theta^2 ~ 1e-300 is still a normal double.
-  expect_matches_reference<Real400>(20 * kDeg, 70 * kDeg, 1e-150, 1e-13, wphi, wpsi, wrho);
+  expect_matches_reference<Real400>(to_radians(20), to_radians(70), 1e-150, 1e-13, wphi, wpsi, wrho);
   std::cout << "[ worst ] phi " << wphi << "\n[ worst ] psi " << wpsi << "\n[ worst ] fold angles " << wrho << "\n";
 }
 
 TEST(MiuraVertex, FlatStateIsExactlyZero) {
-  const MiuraVertexState st = miura_vertex(30 * kDeg, 60 * kDeg, 0.0);
+  const MiuraVertexState st = miura_vertex(to_radians(30), to_radians(60), 0.0);
   EXPECT_EQ(st.phi, 0.0);
   EXPECT_EQ(st.psi, 0.0);
   for (double r : st.fold_angles) EXPECT_EQ(r, 0.0);
@@ -166,7 +165,7 @@ TEST(MiuraVertex, SymmetricVertexHasExactlyZeroPsi) {
 }
 
 TEST(MiuraVertex, SignsAndSymmetries) {
-  const double a1 = 35 * kDeg, a2 = 65 * kDeg, th = 0.4;
+  const double a1 = to_radians(35), a2 = to_radians(65), th = 0.4;
   const MiuraVertexState p = miura_vertex(a1, a2, th), m = miura_vertex(a1, a2, -th), s = miura_vertex(a2, a1, th);
   // theta > 0: c, b, d valley, a mountain; alpha1 < alpha2 tilts a towards b (+y).
   EXPECT_LT(p.fold_angles[kMiuraSpinalOut], 0.0);
@@ -188,7 +187,7 @@ TEST(MiuraVertex, SignsAndSymmetries) {
 TEST(MiuraVertex, ThetaLimitAgreesWithEq40AndIsWhereAPeripheralCreaseFoldsFully) {
   for (int i1 = 5; i1 <= 85; i1 += 5) {
     for (int i2 = 5; i2 <= 85; i2 += 5) {
-      const double a1 = i1 * kDeg, a2 = i2 * kDeg;
+      const double a1 = to_radians(i1), a2 = to_radians(i2);
       const double lim = miura_theta_limit(a1, a2);
       EXPECT_EQ(lim, miura_theta_limit(a2, a1));
       if (i1 == i2) {
@@ -210,7 +209,7 @@ TEST(MiuraVertex, ThetaLimitAgreesWithEq40AndIsWhereAPeripheralCreaseFoldsFully)
     }
   }
   // Limit tends to 45 deg as the smaller alpha tends to 0.
-  EXPECT_NEAR(miura_theta_limit(1e-9, 40 * kDeg), kPi / 4, 1e-8);
+  EXPECT_NEAR(miura_theta_limit(1e-9, to_radians(40)), kPi / 4, 1e-8);
 }
 
 TEST(MiuraVertex, RejectsBadInput) {
@@ -221,13 +220,13 @@ TEST(MiuraVertex, RejectsBadInput) {
   EXPECT_THROW(miura_vertex(nan, 0.5, 0.1), std::invalid_argument);
   EXPECT_THROW(miura_vertex(0.5, 0.7, nan), std::invalid_argument);
   EXPECT_THROW(miura_vertex(0.5, 0.7, INFINITY), std::invalid_argument);
-  const double lim = miura_theta_limit(30 * kDeg, 60 * kDeg);
-  EXPECT_NO_THROW(miura_vertex(30 * kDeg, 60 * kDeg, lim));
-  EXPECT_NO_THROW(miura_vertex(30 * kDeg, 60 * kDeg, -lim));
-  EXPECT_THROW(miura_vertex(30 * kDeg, 60 * kDeg, std::nextafter(lim, 1.0)), std::invalid_argument);
-  EXPECT_THROW(miura_vertex(30 * kDeg, 60 * kDeg, -std::nextafter(lim, 1.0)), std::invalid_argument);
-  EXPECT_THROW(miura_vertex_rotation(30 * kDeg, 60 * kDeg, 1.0), std::invalid_argument);
-  EXPECT_THROW(miura_theta_limit(30 * kDeg, 91 * kDeg), std::invalid_argument);
+  const double lim = miura_theta_limit(to_radians(30), to_radians(60));
+  EXPECT_NO_THROW(miura_vertex(to_radians(30), to_radians(60), lim));
+  EXPECT_NO_THROW(miura_vertex(to_radians(30), to_radians(60), -lim));
+  EXPECT_THROW(miura_vertex(to_radians(30), to_radians(60), std::nextafter(lim, 1.0)), std::invalid_argument);
+  EXPECT_THROW(miura_vertex(to_radians(30), to_radians(60), -std::nextafter(lim, 1.0)), std::invalid_argument);
+  EXPECT_THROW(miura_vertex_rotation(to_radians(30), to_radians(60), 1.0), std::invalid_argument);
+  EXPECT_THROW(miura_theta_limit(to_radians(30), to_radians(91)), std::invalid_argument);
 }
 
 // The kernel's vertex frames for a configuration (sectors, rho) of the Miura vertex:
@@ -245,7 +244,7 @@ TEST(MiuraVertex, FoldAnglesCloseTheGeneralLoop) {
   double worst = 0.0;
   for (int i1 = 5; i1 <= 85; i1 += 5) {
     for (int i2 = 5; i2 <= 85; i2 += 5) {
-      const double a1 = i1 * kDeg, a2 = i2 * kDeg;
+      const double a1 = to_radians(i1), a2 = to_radians(i2);
       for (double th : theta_samples(miura_theta_limit(a1, a2))) {
         const MiuraVertexState st = miura_vertex(a1, a2, th);
         const double r = vertex_closure_residual(as_span(st.sectors), as_span(st.fold_angles)).norm();
@@ -261,7 +260,7 @@ TEST(MiuraVertex, PhiPsiAndRotationAgreeWithANewtonSolveOfTheGeneralClosure) {
   std::mt19937_64 rng(5);
   double worst_angle = 0.0, worst_rot = 0.0;
   for (int k = 0; k < 300; ++k) {
-    const double a1 = test::uniform(rng, 5 * kDeg, 85 * kDeg), a2 = test::uniform(rng, 5 * kDeg, 85 * kDeg);
+    const double a1 = test::uniform(rng, to_radians(5), to_radians(85)), a2 = test::uniform(rng, to_radians(5), to_radians(85));
     const double lim = miura_theta_limit(a1, a2);
     const double th = (rng() % 2 ? 1 : -1) * test::uniform(rng, 0.05, 0.95) * lim;
     const MiuraVertexState st = miura_vertex(a1, a2, th);
@@ -281,7 +280,7 @@ TEST(MiuraVertex, PhiPsiAndRotationAgreeWithANewtonSolveOfTheGeneralClosure) {
     const Eigen::Matrix3d R_loop = f.in.transpose() * f.out;
     EXPECT_LE((R - R_loop).cwiseAbs().maxCoeff(), 1e-12);
     worst_rot = std::max(worst_rot, (R - R_loop).cwiseAbs().maxCoeff());
-    EXPECT_LE((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_LE(orthonormality_error(R), 1e-15);
     EXPECT_NEAR(R.determinant(), 1.0, 1e-15);
     EXPECT_LE((R.col(0) - st.spinal_out).norm(), 0.0);
     // The product form quoted in the header.
@@ -295,7 +294,7 @@ TEST(MiuraVertex, TwoVertexStringChainsRotations) {
   // A second vertex whose crease c is this crease a: its theta is rho_a / 2 = -theta, and the
   // crease after it, expressed in the first incoming frame, is R1 R2 e_x. Check it against
   // the direct geometry: rotate the second vertex's a_hat by R1.
-  const double a1 = 40 * kDeg, a2 = 55 * kDeg, b1 = 25 * kDeg, b2 = 50 * kDeg, th = 0.35;
+  const double a1 = to_radians(40), a2 = to_radians(55), b1 = to_radians(25), b2 = to_radians(50), th = 0.35;
   const MiuraVertexState v1 = miura_vertex(a1, a2, th);
   const double th2 = v1.fold_angles[kMiuraSpinalOut] / 2;
   const MiuraVertexState v2 = miura_vertex(b1, b2, th2);
@@ -312,7 +311,7 @@ TEST(MiuraVertex, PrintedFormAgreesWhereWellConditioned) {
   for (int i1 = 5; i1 <= 85; i1 += 5) {
     for (int i2 = 5; i2 <= 85; i2 += 5) {
       if (i1 == i2) continue;
-      const double a1 = i1 * kDeg, a2 = i2 * kDeg;
+      const double a1 = to_radians(i1), a2 = to_radians(i2);
       for (double th : theta_samples(miura_theta_limit(a1, a2))) {
         const MiuraVertexState st = miura_vertex(a1, a2, th);
         const Printed pr = printed_form(a1, a2, th);
@@ -329,36 +328,36 @@ TEST(MiuraVertex, PrintedFormAgreesWhereWellConditioned) {
 TEST(MiuraVertex, PrintedFormLosesAccuracyWhereTheRewriteDoesNot) {
   // (1) alpha1 ~ alpha2: cot a1 - cot a2 cancels, psi keeps only ~7 digits.
   {
-    const double a1 = 45 * kDeg, a2 = 45 * kDeg + 1e-9, th = 1.0;
+    const double a1 = to_radians(45), a2 = to_radians(45) + 1e-9, th = 1.0;
     const auto ref = test::miura_reference<Real50>(a1, a2, th);
     EXPECT_GT(rel_error(printed_form(a1, a2, th).psi, ref.psi), 1e-9);
     EXPECT_LE(rel_error(miura_vertex(a1, a2, th).psi, ref.psi), 1e-13);
   }
   // (2) theta = 0: the printed form divides by sin theta = 0 and returns phi = atan2(inf, inf).
-  EXPECT_FALSE(printed_form(30 * kDeg, 60 * kDeg, 0.0).phi == 0.0);
-  EXPECT_EQ(miura_vertex(30 * kDeg, 60 * kDeg, 0.0).phi, 0.0);
+  EXPECT_FALSE(printed_form(to_radians(30), to_radians(60), 0.0).phi == 0.0);
+  EXPECT_EQ(miura_vertex(to_radians(30), to_radians(60), 0.0).phi, 0.0);
   // (3) very small theta: (K1 / sin theta)^2 overflows and phi comes out as 0.
   {
     const double th = 1e-160;
-    const auto ref = test::miura_reference<Real400>(30 * kDeg, 60 * kDeg, th);
-    EXPECT_EQ(printed_form(30 * kDeg, 60 * kDeg, th).phi, 0.0);
-    EXPECT_LE(rel_error(miura_vertex(30 * kDeg, 60 * kDeg, th).phi, ref.phi), 1e-13);
+    const auto ref = test::miura_reference<Real400>(to_radians(30), to_radians(60), th);
+    EXPECT_EQ(printed_form(to_radians(30), to_radians(60), th).phi, 0.0);
+    EXPECT_LE(rel_error(miura_vertex(to_radians(30), to_radians(60), th).phi, ref.phi), 1e-13);
   }
   // (4) At theta = 1e-9 the printed form is still accurate (no cancellation: K3 >> 1), which
   // we record rather than assume.
   {
     const double th = 1e-9;
-    const auto ref = test::miura_reference<Real50>(30 * kDeg, 60 * kDeg, th);
-    const Printed pr = printed_form(30 * kDeg, 60 * kDeg, th);
+    const auto ref = test::miura_reference<Real50>(to_radians(30), to_radians(60), th);
+    const Printed pr = printed_form(to_radians(30), to_radians(60), th);
     std::cout << "[ info ] printed form at theta = 1e-9: phi rel err " << rel_error(pr.phi, ref.phi) << ", psi rel err "
               << rel_error(pr.psi, ref.psi) << "\n";
   }
   // (5) Eq. (40) as printed is NaN when alpha1 > alpha2.
-  EXPECT_TRUE(std::isnan(printed_theta_limit(60 * kDeg, 30 * kDeg)));
-  EXPECT_FALSE(std::isnan(miura_theta_limit(60 * kDeg, 30 * kDeg)));
+  EXPECT_TRUE(std::isnan(printed_theta_limit(to_radians(60), to_radians(30))));
+  EXPECT_FALSE(std::isnan(miura_theta_limit(to_radians(60), to_radians(30))));
   // (6) Near alpha1 = alpha2 eq. (40) takes acos of a number close to 1 and loses digits.
   {
-    const double a1 = 50 * kDeg, a2 = 50 * kDeg + 1e-12;
+    const double a1 = to_radians(50), a2 = to_radians(50) + 1e-12;
     // tan^2 theta_limit = sin(a1 + a2) / sin(a2 - a1), in 50 digits.
     const Real50 A1 = a1, A2 = a2;
     const Real50 ref = atan(sqrt(sin(A1 + A2) / sin(A2 - A1)));

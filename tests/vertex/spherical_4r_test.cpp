@@ -15,7 +15,6 @@ namespace {
 
 using test::angle_distance;
 using test::as_span;
-using test::kPi;
 using test::uniform;
 
 double closure_error(const S4RSectors& a, const S4RFoldAngles& rho) {

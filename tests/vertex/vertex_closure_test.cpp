@@ -11,7 +11,6 @@ namespace rigidfold {
 namespace {
 
 using test::as_span;
-using test::kPi;
 using test::uniform;
 
 // Central differences of the residual, column by column.

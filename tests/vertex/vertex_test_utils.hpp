@@ -5,16 +5,14 @@
 #include <Eigen/LU>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <span>
 #include <vector>
 
+#include "kernel/math/angle_units.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold::test {
-
-constexpr double kPi = std::numbers::pi;
 
 inline double wrap(double x) { return std::remainder(x, 2.0 * kPi); }
 // Distance between two angles on the circle.
