@@ -48,7 +48,6 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -62,6 +61,7 @@
 #include "design/strings/string_kinematics.hpp"
 #include "design/strings/string_verify.hpp"
 #include "kernel/geometry/folded_output.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 
@@ -70,7 +70,6 @@ namespace {
 
 using nlohmann::json;
 using namespace rigidfold::design;
-constexpr double kDeg = std::numbers::pi / 180;
 
 // Reads values from a JSON document and names the file and JSON pointer on every error.
 class Reader {
@@ -180,10 +179,10 @@ StringBounds read_bounds(const Reader& r) {
   if (!r.doc().contains("bounds")) return b;
   const json& o = r.doc()["bounds"];
   if (!o.is_object()) r.fail("/bounds", "must be an object");
-  if (o.contains("alpha_min_deg")) b.alpha_min = r.number_in(o, "/bounds", "alpha_min_deg", 0, 90, "(0, 90)") * kDeg;
-  if (o.contains("alpha_max_deg")) b.alpha_max = r.number_in(o, "/bounds", "alpha_max_deg", 0, 90, "(0, 90)") * kDeg;
+  if (o.contains("alpha_min_deg")) b.alpha_min = to_radians(r.number_in(o, "/bounds", "alpha_min_deg", 0, 90, "(0, 90)"));
+  if (o.contains("alpha_max_deg")) b.alpha_max = to_radians(r.number_in(o, "/bounds", "alpha_max_deg", 0, 90, "(0, 90)"));
   if (!(b.alpha_min < b.alpha_max)) r.fail("/bounds", "alpha_min_deg must be below alpha_max_deg");
-  if (o.contains("theta_margin_deg")) b.theta_margin = r.number_in(o, "/bounds", "theta_margin_deg", -1e-300, 45, "[0, 45)") * kDeg;
+  if (o.contains("theta_margin_deg")) b.theta_margin = to_radians(r.number_in(o, "/bounds", "theta_margin_deg", -1e-300, 45, "[0, 45)"));
   if (o.contains("min_segment")) {
     b.min_segment = r.number(o, "/bounds", "min_segment");
     if (!(b.min_segment > 0)) r.fail("/bounds/min_segment", "must be > 0");
@@ -199,25 +198,25 @@ json string_state_json(const MiuraString& s, const StringState& st) {
   j["model"] = "closed form per vertex (seed 000, kernel/vertex/miura_vertex)";
   j["driven_crease"] = {{"edge", 0},
                         {"name", "s_0: lead-in spinal crease = crease c (spinal_in) of vertex 0"},
-                        {"fold_angle_deg", 2 * st.theta[0] / kDeg}};
+                        {"fold_angle_deg", 2 * to_degrees(st.theta[0])}};
   j["transmission"] = st.mode == ThetaMode::Transmitted
                           ? "shared spinal creases: theta_i = (-1)^i theta_0 (rho_spinal_out = -2 theta exactly)"
                           : "independent per-vertex theta: only alternating equal magnitudes are a rigid motion of the sheet";
-  j["shared_crease_mismatch_deg"] = st.shared_crease_mismatch / kDeg;
-  j["min_theta_margin_deg"] = st.min_theta_margin / kDeg;
+  j["shared_crease_mismatch_deg"] = to_degrees(st.shared_crease_mismatch);
+  j["min_theta_margin_deg"] = to_degrees(st.min_theta_margin);
   j["limiting_vertex"] = st.limiting_vertex;
   json verts = json::array();
   for (int i = 0; i < s.size(); ++i) {
     const auto& v = st.vertices[i];
-    verts.push_back({{"alpha1_deg", s.alpha1[i] / kDeg},
-                     {"alpha2_deg", s.alpha2[i] / kDeg},
-                     {"theta_deg", st.theta[i] / kDeg},
-                     {"theta_limit_deg", v.theta_limit / kDeg},
-                     {"phi_deg", v.phi / kDeg},
-                     {"psi_deg", v.psi / kDeg},
+    verts.push_back({{"alpha1_deg", to_degrees(s.alpha1[i])},
+                     {"alpha2_deg", to_degrees(s.alpha2[i])},
+                     {"theta_deg", to_degrees(st.theta[i])},
+                     {"theta_limit_deg", to_degrees(v.theta_limit)},
+                     {"phi_deg", to_degrees(v.phi)},
+                     {"psi_deg", to_degrees(v.psi)},
                      {"fold_angles_deg",
-                      {{"spinal_in", v.rho_c / kDeg}, {"spinal_out", v.rho_a / kDeg}, {"peripheral_1", v.rho_b / kDeg},
-                       {"peripheral_2", v.rho_d / kDeg}}}});
+                      {{"spinal_in", to_degrees(v.rho_c)}, {"spinal_out", to_degrees(v.rho_a)}, {"peripheral_1", to_degrees(v.rho_b)},
+                       {"peripheral_2", to_degrees(v.rho_d)}}}});
   }
   j["vertices"] = verts;
   json spine = json::array(), frames = json::array();
@@ -254,7 +253,7 @@ std::vector<Eigen::Vector3d> read_curve(const Reader& r) {
     if (!(radius > 0)) r.fail(ptr + "/radius", "must be > 0");
     const double growth = helix ? 0.0 : r.number(o, ptr, "growth");
     const double rise = r.number(o, ptr, "rise");
-    const double step = r.number_in(o, ptr, "step_deg", -360, 360, "(-360, 360)") * kDeg;
+    const double step = to_radians(r.number_in(o, ptr, "step_deg", -360, 360, "(-360, 360)"));
     const double count = r.number(o, ptr, "count");
     if (count != std::floor(count) || count < 3 || count > 1e6) r.fail(ptr + "/count", "must be an integer in [3, 1e6]");
     for (int k = 0; k < static_cast<int>(count); ++k) {
@@ -273,19 +272,88 @@ void print_or_json(const json& j, bool as_json, const std::string& text) {
   else std::cout << text;
 }
 
-}  // namespace
+// ---- string forward ----------------------------------------------------------------
 
-void add_string_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("string", "Origami strings of asymmetric Miura vertices: forward kinematics and inverse design");
-  cmd->require_subcommand(1);
+struct ForwardArgs {
+  std::string spec, out, svg;
+  double theta = 0;
+  bool theta_given = false, json = false;
+};
 
-  struct ForwardArgs {
-    std::string spec, out, svg;
-    double theta = 0;
-    bool theta_given = false, json = false;
-  };
+// Forward step 1: the spec's vertices. Fills s.alpha1, s.alpha2 and, in independent mode,
+// theta (one drive angle per vertex); all radians.
+void read_forward_vertices(const Reader& r, const ForwardArgs& fa, const std::string& mode, MiuraString& s,
+                           std::vector<double>& theta) {
+  const json& verts = r.array(r.doc(), "", "vertices");
+  if (fa.theta_given && !(std::isfinite(fa.theta) && std::fabs(fa.theta) < 90)) throw InputError("--theta", "must be in (-90, 90) degrees");
+  for (std::size_t i = 0; i < verts.size(); ++i) {
+    const std::string ptr = "/vertices/" + std::to_string(i);
+    s.alpha1.push_back(to_radians(r.number_in(verts[i], ptr, "alpha1_deg", 0, 90, "(0, 90)")));
+    s.alpha2.push_back(to_radians(r.number_in(verts[i], ptr, "alpha2_deg", 0, 90, "(0, 90)")));
+    if (mode == "independent") {
+      if (verts[i].contains("theta_deg")) theta.push_back(to_radians(r.number_in(verts[i], ptr, "theta_deg", -90, 90, "(-90, 90)")));
+      else if (fa.theta_given) theta.push_back(to_radians(fa.theta));
+      else r.fail(ptr + "/theta_deg", "missing (independent mode needs theta_deg per vertex or --theta)");
+    }
+  }
+  if (mode == "transmitted" && !fa.theta_given) throw InputError("--theta", "required in transmitted mode");
+}
+
+// Forward step 2: the closed-form fold; a string that cannot reach the drive names the flag
+// (transmitted) or the spec (independent).
+StringState forward_state(const MiuraString& s, const std::vector<double>& theta, const ForwardArgs& fa,
+                          const std::string& mode) {
+  try {
+    return mode == "transmitted" ? string_forward(s, to_radians(fa.theta)) : string_forward_independent(s, theta);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(mode == "transmitted" ? "--theta" : fa.spec, e.what());
+  }
+}
+
+// Forward step 3: the text report.
+std::string forward_text(const MiuraString& s, const StringState& st, const FoldedGeometry& folded, const json& j,
+                         const std::string& mode, const std::string& out) {
+  std::ostringstream t;
+  t.precision(10);
+  t << "origami string, " << s.size() << " Miura vertices, mode " << mode << "\n"
+    << "  driven crease: edge 0 (s_0, lead-in spinal crease = crease c of vertex 0), fold angle " << 2 * to_degrees(st.theta[0])
+    << " deg\n"
+    << "  transmission: " << j["transmission"].get<std::string>() << "\n"
+    << "  spine end: (" << st.spine.back().x() << ", " << st.spine.back().y() << ", " << st.spine.back().z() << ")\n"
+    << "  min theta margin " << to_degrees(st.min_theta_margin) << " deg at vertex " << st.limiting_vertex
+    << "; shared crease mismatch " << to_degrees(st.shared_crease_mismatch) << " deg; face placement mismatch "
+    << folded.max_mismatch << "\n";
+  if (!out.empty()) t << "  wrote " << out << "\n";
+  return t.str();
+}
+
+void run_forward(const ForwardArgs& fa) {
+  Reader r(fa.spec);
+  const std::string mode = r.string_of(r.doc(), "mode", "transmitted", {"transmitted", "independent"});
+  MiuraString s;
+  std::vector<double> theta;
+  read_forward_vertices(r, fa, mode, s, theta);
+  s.lengths = read_lengths(r, s.size());
+  apply_width(r, s, read_width(r));
+  const StringState st = forward_state(s, theta, fa, mode);
+  const CreasePattern pattern = build_string_pattern(s, st.edge_fold_angles);
+  const FoldedGeometry folded = fold_string_pattern(pattern, st);
+  json j = string_state_json(s, st);
+  j["spec"] = fa.spec;
+  j["width"] = s.width;
+  j["placement_mismatch"] = folded.max_mismatch;
+  if (!fa.out.empty()) {
+    write_text_file_atomically(fa.out, folded_fold_text(pattern, folded, st.edge_fold_angles, "string folded at theta = " +
+                                                                                                std::to_string(fa.theta) + " deg"));
+    j["out"] = fa.out;
+  }
+  if (!fa.svg.empty()) write_text_file_atomically(fa.svg, string_pattern_svg(pattern));
+  print_or_json(j, fa.json, forward_text(s, st, folded, j, mode, fa.out));
+}
+
+void add_forward_subcommand(CLI::App& cmd) {
   auto fa = std::make_shared<ForwardArgs>();
-  auto* fwd = cmd->add_subcommand("forward", "Fold a string spec at drive angle theta (closed form), optionally write the folded FOLD");
+  auto* fwd = cmd.add_subcommand("forward", "Fold a string spec at drive angle theta (closed form), optionally write the folded FOLD");
   fwd->add_option("spec", fa->spec, "SPEC.json (see the header of app/command_string.cpp)")->required();
   auto* theta_opt = fwd->add_option("--theta", fa->theta, "drive: half fold angle of the lead-in spinal crease, degrees (valley > 0)");
   fwd->add_option("--out", fa->out, "folded FOLD output (crease pattern + foldedForm frame)");
@@ -293,281 +361,310 @@ void add_string_command(CLI::App& app) {
   fwd->add_flag("--json", fa->json, "print JSON");
   fwd->callback([fa, theta_opt] {
     fa->theta_given = theta_opt->count() > 0;
-    Reader r(fa->spec);
-    const std::string mode = r.string_of(r.doc(), "mode", "transmitted", {"transmitted", "independent"});
-    const json& verts = r.array(r.doc(), "", "vertices");
-    MiuraString s;
-    std::vector<double> theta;
-    if (fa->theta_given && !(std::isfinite(fa->theta) && std::fabs(fa->theta) < 90)) throw InputError("--theta", "must be in (-90, 90) degrees");
-    for (std::size_t i = 0; i < verts.size(); ++i) {
-      const std::string ptr = "/vertices/" + std::to_string(i);
-      s.alpha1.push_back(r.number_in(verts[i], ptr, "alpha1_deg", 0, 90, "(0, 90)") * kDeg);
-      s.alpha2.push_back(r.number_in(verts[i], ptr, "alpha2_deg", 0, 90, "(0, 90)") * kDeg);
-      if (mode == "independent") {
-        if (verts[i].contains("theta_deg")) theta.push_back(r.number_in(verts[i], ptr, "theta_deg", -90, 90, "(-90, 90)") * kDeg);
-        else if (fa->theta_given) theta.push_back(fa->theta * kDeg);
-        else r.fail(ptr + "/theta_deg", "missing (independent mode needs theta_deg per vertex or --theta)");
-      }
-    }
-    if (mode == "transmitted" && !fa->theta_given) throw InputError("--theta", "required in transmitted mode");
-    s.lengths = read_lengths(r, s.size());
-    apply_width(r, s, read_width(r));
-    StringState st;
-    try {
-      st = mode == "transmitted" ? string_forward(s, fa->theta * kDeg) : string_forward_independent(s, theta);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(mode == "transmitted" ? "--theta" : fa->spec, e.what());
-    }
-    const CreasePattern pattern = build_string_pattern(s, st.edge_fold_angles);
-    const FoldedGeometry folded = fold_string_pattern(pattern, st);
-    json j = string_state_json(s, st);
-    j["spec"] = fa->spec;
-    j["width"] = s.width;
-    j["placement_mismatch"] = folded.max_mismatch;
-    if (!fa->out.empty()) {
-      write_text_file_atomically(fa->out, folded_fold_text(pattern, folded, st.edge_fold_angles, "string folded at theta = " +
-                                                                                                   std::to_string(fa->theta) + " deg"));
-      j["out"] = fa->out;
-    }
-    if (!fa->svg.empty()) write_text_file_atomically(fa->svg, string_pattern_svg(pattern));
-    std::ostringstream t;
-    t.precision(10);
-    t << "origami string, " << s.size() << " Miura vertices, mode " << mode << "\n"
-      << "  driven crease: edge 0 (s_0, lead-in spinal crease = crease c of vertex 0), fold angle " << 2 * st.theta[0] / kDeg
-      << " deg\n"
-      << "  transmission: " << j["transmission"].get<std::string>() << "\n"
-      << "  spine end: (" << st.spine.back().x() << ", " << st.spine.back().y() << ", " << st.spine.back().z() << ")\n"
-      << "  min theta margin " << st.min_theta_margin / kDeg << " deg at vertex " << st.limiting_vertex
-      << "; shared crease mismatch " << st.shared_crease_mismatch / kDeg << " deg; face placement mismatch "
-      << folded.max_mismatch << "\n";
-    if (!fa->out.empty()) t << "  wrote " << fa->out << "\n";
-    print_or_json(j, fa->json, t.str());
+    run_forward(*fa);
   });
+}
 
-  struct DesignArgs {
-    std::string target, out, svg;
-    bool json = false;
-  };
+// ---- string design -----------------------------------------------------------------
+
+struct DesignArgs {
+  std::string target, out, svg;
+  bool json = false;
+};
+
+// What a design method produced: the string (segment lengths set, width not yet), its drive
+// angle theta0 (radians) and, for curve targets, the target points and the pose that places
+// the designed string on them.
+struct DesignedString {
+  MiuraString s;
+  double theta0 = 0;
+  bool have_pose = false;
+  StringPose pose;
+  std::vector<Eigen::Vector3d> curve;
+};
+
+// "kind": "deflections": per-vertex closed-form inverse at one fold state.
+DesignedString design_deflections(const Reader& r, const std::string& mode, const json& verts, const StringBounds& bounds,
+                                  json& j) {
+  const int n = static_cast<int>(verts.size());
+  DesignedString out;
+  out.theta0 = to_radians(r.number_in(r.doc(), "", "theta_deg", -90, 90, "(-90, 90)"));
+  if (out.theta0 == 0) r.fail("/theta_deg", "must be nonzero (the flat state has no deflection)");
+  std::vector<double> phi, psi, theta = transmitted_thetas(out.theta0, n);
+  for (int i = 0; i < n; ++i) {
+    const std::string ptr = "/vertices/" + std::to_string(i);
+    phi.push_back(to_radians(r.number_in(verts[i], ptr, "phi_deg", -180, 180, "(-180, 180)")));
+    psi.push_back(to_radians(r.number_in(verts[i], ptr, "psi_deg", -90, 90, "(-90, 90)")));
+    if (mode == "independent")
+      theta[i] = verts[i].contains("theta_deg") ? to_radians(r.number_in(verts[i], ptr, "theta_deg", -90, 90, "(-90, 90)")) : out.theta0;
+  }
+  const DeflectionDesign d = design_from_deflections(phi, psi, theta, bounds);
+  j["method"] = "closed-form inverse per vertex (unique alpha1, alpha2 for the given theta_i)";
+  json vj = json::array();
+  for (int i = 0; i < n; ++i) {
+    const auto& v = d.vertices[i];
+    vj.push_back({{"feasible", v.feasible}, {"reason", v.reason}, {"theta_deg", to_degrees(v.theta)}, {"alpha1_deg", to_degrees(v.alpha1)},
+                  {"alpha2_deg", to_degrees(v.alpha2)}, {"phi_residual_deg", to_degrees(v.phi_error)}, {"psi_residual_deg", to_degrees(v.psi_error)}});
+  }
+  j["vertices"] = vj;
+  if (!d.feasible) {
+    for (int i = 0; i < n; ++i)
+      if (!d.vertices[i].feasible)
+        r.fail("/vertices/" + std::to_string(i), "unreachable at theta_i = " + std::to_string(to_degrees(theta[i])) + " deg: " + d.vertices[i].reason);
+  }
+  for (const auto& v : d.vertices) {
+    out.s.alpha1.push_back(v.alpha1);
+    out.s.alpha2.push_back(v.alpha2);
+  }
+  if (mode == "independent") {
+    // A sheet is built only for what one actuation can fold.
+    for (int i = 0; i + 1 < n; ++i)
+      if (std::fabs(theta[i + 1] + theta[i]) > 1e-12)
+        r.fail("/vertices/" + std::to_string(i + 1) + "/theta_deg",
+               "independent thetas that do not alternate (theta_{i+1} = -theta_i) are not a rigid motion of one strip; "
+               "the FOLD output would not fold");
+  }
+  return out;
+}
+
+// "kind": "trajectories": the drive samples and per-vertex phi/psi samples, in radians.
+TrajectoryTarget read_trajectory_target(const Reader& r, const std::string& mode, const json& verts) {
+  const int n = static_cast<int>(verts.size());
+  TrajectoryTarget tt;
+  tt.mode = mode == "transmitted" ? ThetaMode::Transmitted : ThetaMode::Independent;
+  tt.theta = r.numbers(r.at(r.doc(), "", "theta_deg"), "/theta_deg");
+  if (tt.theta.empty()) r.fail("/theta_deg", "needs at least one sample");
+  for (std::size_t k = 0; k < tt.theta.size(); ++k) {
+    if (!(std::fabs(tt.theta[k]) < 90) || tt.theta[k] == 0) r.fail("/theta_deg/" + std::to_string(k), "must be in (-90, 90), nonzero");
+    tt.theta[k] = to_radians(tt.theta[k]);
+  }
+  for (int i = 0; i < n; ++i) {
+    const std::string ptr = "/vertices/" + std::to_string(i);
+    auto ph = r.numbers(r.at(verts[i], ptr, "phi_deg"), ptr + "/phi_deg");
+    auto ps = r.numbers(r.at(verts[i], ptr, "psi_deg"), ptr + "/psi_deg");
+    if (ph.size() != tt.theta.size()) r.fail(ptr + "/phi_deg", "needs one value per theta sample");
+    if (ps.size() != tt.theta.size()) r.fail(ptr + "/psi_deg", "needs one value per theta sample");
+    for (auto& v : ph) v = to_radians(v);
+    for (std::size_t k = 0; k < ps.size(); ++k) {
+      if (!(std::fabs(ps[k]) < 90)) r.fail(ptr + "/psi_deg/" + std::to_string(k), "must be in (-90, 90)");
+      ps[k] = to_radians(ps[k]);
+    }
+    tt.phi.push_back(ph);
+    tt.psi.push_back(ps);
+  }
+  return tt;
+}
+
+// "kind": "trajectories": Ceres least squares over the theta samples.
+DesignedString design_trajectories(const Reader& r, const std::string& mode, const json& verts, const StringBounds& bounds,
+                                   json& j) {
+  const int n = static_cast<int>(verts.size());
+  const TrajectoryTarget tt = read_trajectory_target(r, mode, verts);
+  const TrajectoryFitResult fit = fit_string_trajectories(tt, bounds);
+  j["method"] = "Ceres least squares over the theta samples (automatic derivatives, alpha bounds)";
+  j["ceres"] = fit.report;
+  j["converged"] = fit.converged;
+  j["max_residual_deg"] = to_degrees(fit.max_residual);
+  j["binding_bounds"] = fit.binding;
+  json vj = json::array();
+  for (int i = 0; i < n; ++i)
+    vj.push_back({{"alpha1_deg", to_degrees(fit.alpha1[i])}, {"alpha2_deg", to_degrees(fit.alpha2[i])}, {"rms_residual_deg", to_degrees(fit.vertex_rms[i])}});
+  j["vertices"] = vj;
+  DesignedString out;
+  out.s.alpha1 = fit.alpha1;
+  out.s.alpha2 = fit.alpha2;
+  out.theta0 = tt.theta[0];
+  for (double th : tt.theta)
+    if (std::fabs(th) > std::fabs(out.theta0)) out.theta0 = th;
+  if (mode == "independent" && n > 1)
+    j["note"] = "independent mode: the folded FOLD frame shows the transmitted (one-DOF) state at the largest sample";
+  return out;
+}
+
+// "kind": "deflections" | "trajectories": the shared "mode" and "vertices", then the method,
+// then the segment lengths.
+DesignedString design_from_vertex_targets(const Reader& r, const std::string& kind, const StringBounds& bounds, json& j) {
+  const std::string mode = r.string_of(r.doc(), "mode", "transmitted", {"transmitted", "independent"});
+  const json& verts = r.array(r.doc(), "", "vertices");
+  const int n = static_cast<int>(verts.size());
+  j["mode"] = mode;
+  DesignedString out =
+      kind == "deflections" ? design_deflections(r, mode, verts, bounds, j) : design_trajectories(r, mode, verts, bounds, j);
+  out.s.lengths = read_lengths(r, n);
+  return out;
+}
+
+// "kind": "curve", NLopt: "algorithm" and "global" from the file, seeded by the closed form.
+NloptFitResult fit_curve_with_nlopt(const Reader& r, const std::vector<Eigen::Vector3d>& curve, const CurveDesignOptions& co) {
+  NloptFitOptions no;
+  no.seed = co;
+  if (r.doc().contains("algorithm")) {
+    if (!r.doc()["algorithm"].is_string()) r.fail("/algorithm", "must be a string");
+    no.algorithm = r.doc()["algorithm"].get<std::string>();
+  }
+  if (r.doc().contains("global")) {
+    if (!r.doc()["global"].is_boolean()) r.fail("/global", "must be true or false");
+    no.global = r.doc()["global"].get<bool>();
+  }
+  try {
+    return fit_string_to_curve(curve, no);
+  } catch (const std::invalid_argument& e) {
+    r.fail("/algorithm", e.what());
+  }
+}
+
+// "kind": "curve": closed-form sequential inverse, or NLopt where it is not exact (or asked for).
+DesignedString design_curve(const Reader& r, const StringBounds& bounds, json& j) {
+  DesignedString out;
+  out.curve = read_curve(r);
+  const std::vector<Eigen::Vector3d>& curve = out.curve;
+  CurveDesignOptions co;
+  co.bounds = bounds;
+  if (r.doc().contains("theta_deg")) {
+    co.theta0 = to_radians(r.number_in(r.doc(), "", "theta_deg", -90, 90, "(-90, 90)"));
+    if (*co.theta0 == 0) r.fail("/theta_deg", "must be nonzero");
+  }
+  if (r.doc().contains("roll_deg")) co.roll = to_radians(r.number(r.doc(), "", "roll_deg"));
+  const std::string method = r.string_of(r.doc(), "method", "auto", {"auto", "closed_form", "nlopt"});
+  for (std::size_t k = 0; k + 1 < curve.size(); ++k)
+    if (!((curve[k + 1] - curve[k]).norm() >= bounds.min_segment))
+      r.fail("/points/" + std::to_string(k + 1), "segment shorter than bounds.min_segment");
+  const CurveDesign cd = design_from_curve(curve, co);
+  j["closed_form"] = {{"exact", cd.feasible}, {"first_unreachable_vertex", cd.first_infeasible},
+                      {"theta0_deg", to_degrees(cd.theta0)}, {"roll_deg", to_degrees(cd.roll)}, {"alpha_margin_deg", to_degrees(cd.alpha_margin)}};
+  if (method == "closed_form" || (method == "auto" && cd.feasible)) {
+    if (!cd.feasible)
+      r.fail("/points/" + std::to_string(cd.first_infeasible + 2),
+             "not reachable in closed form (vertex " + std::to_string(cd.first_infeasible) + ": " +
+                 cd.vertices[cd.first_infeasible].reason + "); use \"method\": \"nlopt\" for the best fit");
+    j["method"] = "closed-form sequential inverse (theta0 and roll chosen by grid search for the largest bound margin)";
+    out.s = cd.string;
+    out.theta0 = cd.theta0;
+    out.pose = cd.pose;
+  } else {
+    const NloptFitResult fit = fit_curve_with_nlopt(r, curve, co);
+    j["method"] = "NLopt " + fit.algorithm + " from the closed-form seed (bounds: alpha, theta limit with margin, min segment)";
+    j["nlopt"] = {{"status", fit.status}, {"evaluations", fit.evaluations}};
+    j["reachable"] = fit.reachable;
+    j["max_error"] = fit.max_error;
+    j["rms_error"] = fit.rms_error;
+    j["max_error_per_segment"] = fit.max_error / fit.mean_segment;
+    j["binding_bounds"] = fit.binding;
+    j["point_errors"] = fit.point_errors;
+    out.s = fit.string;
+    out.theta0 = fit.theta0;
+    out.pose = fit.pose;
+  }
+  out.have_pose = true;
+  return out;
+}
+
+// The general solver's check of a design, as JSON; for curve targets also the distance of
+// the folded spine, moved rigidly onto the design pose (no fitting), to the target points.
+json verification_json(const StringVerification& v, const DesignedString& d) {
+  json ver = {{"solver", "general loop closure, Newton projection from the closed form + 1e-6 rad, s_0 fixed"},
+              {"converged", v.converged},
+              {"iterations", v.iterations},
+              {"closure_residual_rad", v.closure_residual},
+              {"max_angle_difference_rad", v.max_angle_error},
+              {"max_spine_difference", v.max_spine_error}};
+  if (d.have_pose) {
+    // Folded pattern (pattern pose) -> target frame: the rigid map taking the pattern's
+    // C_0 to the design's C_0; no fitting.
+    const StringPose pp = pattern_pose(d.theta0);
+    const Eigen::Matrix3d Rm = d.pose.frame * pp.frame.transpose();
+    const std::vector<Eigen::Vector3d>& curve = d.curve;
+    double worst = 0;
+    for (int k = 0; k < d.s.size() + 2; ++k) {
+      const Eigen::Vector3d q = Rm * (v.folded.vertices[k] - pp.start) + d.pose.start;
+      worst = std::max(worst, (q - curve[k]).norm());
+    }
+    double total = 0;  // mean TARGET segment, the same scale as the NLopt report
+    for (std::size_t k = 0; k + 1 < curve.size(); ++k) total += (curve[k + 1] - curve[k]).norm();
+    ver["max_target_error"] = worst;
+    ver["max_target_error_per_segment"] = worst / (total / (curve.size() - 1));
+  }
+  return ver;
+}
+
+// The text report of a design.
+std::string design_text(const std::string& kind, const DesignedString& d, const StringVerification& v, const json& j,
+                        const std::string& out) {
+  const json& ver = j["verification"];
+  std::ostringstream t;
+  t.precision(10);
+  t << "designed origami string (" << kind << "), " << d.s.size() << " vertices, theta0 = " << to_degrees(d.theta0) << " deg\n"
+    << "  method: " << j["method"].get<std::string>() << "\n"
+    << "  verification (general solver): converged " << (v.converged ? "yes" : "no") << ", residual " << v.closure_residual
+    << " rad, max angle difference " << v.max_angle_error << " rad, max spine difference " << v.max_spine_error << "\n";
+  if (ver.contains("max_target_error")) t << "  max distance to the target points: " << ver["max_target_error"].get<double>() << "\n";
+  if (j.contains("binding_bounds") && !j["binding_bounds"].empty()) {
+    t << "  binding bounds:";
+    for (const auto& b : j["binding_bounds"]) t << " " << b.get<std::string>() << ";";
+    t << "\n";
+  }
+  if (j.contains("reachable") && !j["reachable"].get<bool>()) t << "  target NOT reachable: best fit written\n";
+  t << "  wrote " << out << "\n";
+  return t.str();
+}
+
+void run_design(const DesignArgs& da) {
+  // Step 1: the target's kind and the settings every kind shares.
+  Reader r(da.target);
+  const std::string kind = r.string_of(r.doc(), "kind", "", {"deflections", "trajectories", "curve"});
+  if (kind.empty()) r.fail("/kind", "missing (deflections, trajectories or curve)");
+  const StringBounds bounds = read_bounds(r);
+  const std::optional<double> width = read_width(r);
+  json j;
+  j["target"] = da.target;
+  j["kind"] = kind;
+  // Step 2: the design method of the kind.
+  DesignedString d = kind == "curve" ? design_curve(r, bounds, j) : design_from_vertex_targets(r, kind, bounds, j);
+  MiuraString& s = d.s;
+  apply_width(r, s, width);
+  // Step 3: fold the designed string in closed form and check it with the general solver.
+  StringState st;
+  try {
+    st = string_forward(s, d.theta0);  // the pattern pose (face 0 fixed)
+  } catch (const std::invalid_argument& e) {
+    r.fail("", std::string("designed string cannot fold at the design theta: ") + e.what());
+  }
+  const CreasePattern pattern = build_string_pattern(s, st.edge_fold_angles);
+  // Newton starts 1e-6 rad away from the closed form, so the solver has to converge on its own.
+  const StringVerification v = verify_string_with_general_solver(s, pattern, st, 1e-6);
+  // Step 4: the report, then the outputs (only after everything succeeded).
+  j["theta0_deg"] = to_degrees(d.theta0);
+  j["width"] = s.width;
+  j["driven_crease"] = {{"edge", 0}, {"fold_angle_deg", 2 * to_degrees(d.theta0)}, {"name", "s_0: lead-in spinal crease"}};
+  j["string"] = {{"alpha1_deg", json::array()}, {"alpha2_deg", json::array()}, {"segment_lengths", s.lengths}};
+  for (int i = 0; i < s.size(); ++i) {
+    j["string"]["alpha1_deg"].push_back(to_degrees(s.alpha1[i]));
+    j["string"]["alpha2_deg"].push_back(to_degrees(s.alpha2[i]));
+  }
+  j["verification"] = verification_json(v, d);
+  write_text_file_atomically(da.out, folded_fold_text(pattern, v.folded, v.solver_angles, "designed origami string"));
+  if (!da.svg.empty()) write_text_file_atomically(da.svg, string_pattern_svg(pattern));
+  j["out"] = da.out;
+  print_or_json(j, da.json, design_text(kind, d, v, j, da.out));
+}
+
+void add_design_subcommand(CLI::App& cmd) {
   auto da = std::make_shared<DesignArgs>();
-  auto* des = cmd->add_subcommand("design", "Design a string for a target (deflections, trajectories or a 3D curve)");
+  auto* des = cmd.add_subcommand("design", "Design a string for a target (deflections, trajectories or a 3D curve)");
   des->add_option("target", da->target, "TARGET.json (see the header of app/command_string.cpp)")->required();
   des->add_option("--out", da->out, "designed string: crease pattern + folded frame (FOLD)")->required();
   des->add_option("--svg", da->svg, "crease pattern SVG for cutting");
   des->add_flag("--json", da->json, "print JSON");
-  des->callback([da] {
-    Reader r(da->target);
-    const std::string kind = r.string_of(r.doc(), "kind", "", {"deflections", "trajectories", "curve"});
-    if (kind.empty()) r.fail("/kind", "missing (deflections, trajectories or curve)");
-    const StringBounds bounds = read_bounds(r);
-    const std::optional<double> width = read_width(r);
-    json j;
-    j["target"] = da->target;
-    j["kind"] = kind;
-    MiuraString s;
-    double theta0 = 0;
-    StringPose design_pose;
-    bool have_pose = false;
-    std::vector<Eigen::Vector3d> curve;
-    std::ostringstream t;
-    t.precision(10);
-    if (kind == "deflections" || kind == "trajectories") {
-      const std::string mode = r.string_of(r.doc(), "mode", "transmitted", {"transmitted", "independent"});
-      const json& verts = r.array(r.doc(), "", "vertices");
-      const int n = static_cast<int>(verts.size());
-      j["mode"] = mode;
-      if (kind == "deflections") {
-        theta0 = r.number_in(r.doc(), "", "theta_deg", -90, 90, "(-90, 90)") * kDeg;
-        if (theta0 == 0) r.fail("/theta_deg", "must be nonzero (the flat state has no deflection)");
-        std::vector<double> phi, psi, theta = transmitted_thetas(theta0, n);
-        for (int i = 0; i < n; ++i) {
-          const std::string ptr = "/vertices/" + std::to_string(i);
-          phi.push_back(r.number_in(verts[i], ptr, "phi_deg", -180, 180, "(-180, 180)") * kDeg);
-          psi.push_back(r.number_in(verts[i], ptr, "psi_deg", -90, 90, "(-90, 90)") * kDeg);
-          if (mode == "independent")
-            theta[i] = verts[i].contains("theta_deg") ? r.number_in(verts[i], ptr, "theta_deg", -90, 90, "(-90, 90)") * kDeg : theta0;
-        }
-        const DeflectionDesign d = design_from_deflections(phi, psi, theta, bounds);
-        j["method"] = "closed-form inverse per vertex (unique alpha1, alpha2 for the given theta_i)";
-        json vj = json::array();
-        for (int i = 0; i < n; ++i) {
-          const auto& v = d.vertices[i];
-          vj.push_back({{"feasible", v.feasible}, {"reason", v.reason}, {"theta_deg", v.theta / kDeg}, {"alpha1_deg", v.alpha1 / kDeg},
-                        {"alpha2_deg", v.alpha2 / kDeg}, {"phi_residual_deg", v.phi_error / kDeg}, {"psi_residual_deg", v.psi_error / kDeg}});
-        }
-        j["vertices"] = vj;
-        if (!d.feasible) {
-          for (int i = 0; i < n; ++i)
-            if (!d.vertices[i].feasible)
-              r.fail("/vertices/" + std::to_string(i), "unreachable at theta_i = " + std::to_string(theta[i] / kDeg) + " deg: " + d.vertices[i].reason);
-        }
-        for (const auto& v : d.vertices) {
-          s.alpha1.push_back(v.alpha1);
-          s.alpha2.push_back(v.alpha2);
-        }
-        if (mode == "independent") {
-          // A sheet is built only for what one actuation can fold.
-          for (int i = 0; i + 1 < n; ++i)
-            if (std::fabs(theta[i + 1] + theta[i]) > 1e-12)
-              r.fail("/vertices/" + std::to_string(i + 1) + "/theta_deg",
-                     "independent thetas that do not alternate (theta_{i+1} = -theta_i) are not a rigid motion of one strip; "
-                     "the FOLD output would not fold");
-        }
-      } else {
-        TrajectoryTarget tt;
-        tt.mode = mode == "transmitted" ? ThetaMode::Transmitted : ThetaMode::Independent;
-        tt.theta = r.numbers(r.at(r.doc(), "", "theta_deg"), "/theta_deg");
-        if (tt.theta.empty()) r.fail("/theta_deg", "needs at least one sample");
-        for (std::size_t k = 0; k < tt.theta.size(); ++k) {
-          if (!(std::fabs(tt.theta[k]) < 90) || tt.theta[k] == 0) r.fail("/theta_deg/" + std::to_string(k), "must be in (-90, 90), nonzero");
-          tt.theta[k] *= kDeg;
-        }
-        for (int i = 0; i < n; ++i) {
-          const std::string ptr = "/vertices/" + std::to_string(i);
-          auto ph = r.numbers(r.at(verts[i], ptr, "phi_deg"), ptr + "/phi_deg");
-          auto ps = r.numbers(r.at(verts[i], ptr, "psi_deg"), ptr + "/psi_deg");
-          if (ph.size() != tt.theta.size()) r.fail(ptr + "/phi_deg", "needs one value per theta sample");
-          if (ps.size() != tt.theta.size()) r.fail(ptr + "/psi_deg", "needs one value per theta sample");
-          for (auto& v : ph) v *= kDeg;
-          for (std::size_t k = 0; k < ps.size(); ++k) {
-            if (!(std::fabs(ps[k]) < 90)) r.fail(ptr + "/psi_deg/" + std::to_string(k), "must be in (-90, 90)");
-            ps[k] *= kDeg;
-          }
-          tt.phi.push_back(ph);
-          tt.psi.push_back(ps);
-        }
-        const TrajectoryFitResult fit = fit_string_trajectories(tt, bounds);
-        j["method"] = "Ceres least squares over the theta samples (automatic derivatives, alpha bounds)";
-        j["ceres"] = fit.report;
-        j["converged"] = fit.converged;
-        j["max_residual_deg"] = fit.max_residual / kDeg;
-        j["binding_bounds"] = fit.binding;
-        json vj = json::array();
-        for (int i = 0; i < n; ++i)
-          vj.push_back({{"alpha1_deg", fit.alpha1[i] / kDeg}, {"alpha2_deg", fit.alpha2[i] / kDeg}, {"rms_residual_deg", fit.vertex_rms[i] / kDeg}});
-        j["vertices"] = vj;
-        s.alpha1 = fit.alpha1;
-        s.alpha2 = fit.alpha2;
-        theta0 = tt.theta[0];
-        for (double th : tt.theta)
-          if (std::fabs(th) > std::fabs(theta0)) theta0 = th;
-        if (mode == "independent" && n > 1)
-          j["note"] = "independent mode: the folded FOLD frame shows the transmitted (one-DOF) state at the largest sample";
-      }
-      s.lengths = read_lengths(r, n);
-    } else {
-      curve = read_curve(r);
-      CurveDesignOptions co;
-      co.bounds = bounds;
-      if (r.doc().contains("theta_deg")) {
-        co.theta0 = r.number_in(r.doc(), "", "theta_deg", -90, 90, "(-90, 90)") * kDeg;
-        if (*co.theta0 == 0) r.fail("/theta_deg", "must be nonzero");
-      }
-      if (r.doc().contains("roll_deg")) co.roll = r.number(r.doc(), "", "roll_deg") * kDeg;
-      const std::string method = r.string_of(r.doc(), "method", "auto", {"auto", "closed_form", "nlopt"});
-      for (std::size_t k = 0; k + 1 < curve.size(); ++k)
-        if (!((curve[k + 1] - curve[k]).norm() >= bounds.min_segment))
-          r.fail("/points/" + std::to_string(k + 1), "segment shorter than bounds.min_segment");
-      const CurveDesign cd = design_from_curve(curve, co);
-      j["closed_form"] = {{"exact", cd.feasible}, {"first_unreachable_vertex", cd.first_infeasible},
-                          {"theta0_deg", cd.theta0 / kDeg}, {"roll_deg", cd.roll / kDeg}, {"alpha_margin_deg", cd.alpha_margin / kDeg}};
-      if (method == "closed_form" || (method == "auto" && cd.feasible)) {
-        if (!cd.feasible)
-          r.fail("/points/" + std::to_string(cd.first_infeasible + 2),
-                 "not reachable in closed form (vertex " + std::to_string(cd.first_infeasible) + ": " +
-                     cd.vertices[cd.first_infeasible].reason + "); use \"method\": \"nlopt\" for the best fit");
-        j["method"] = "closed-form sequential inverse (theta0 and roll chosen by grid search for the largest bound margin)";
-        s = cd.string;
-        theta0 = cd.theta0;
-        design_pose = cd.pose;
-      } else {
-        NloptFitOptions no;
-        no.seed = co;
-        if (r.doc().contains("algorithm")) {
-          if (!r.doc()["algorithm"].is_string()) r.fail("/algorithm", "must be a string");
-          no.algorithm = r.doc()["algorithm"].get<std::string>();
-        }
-        if (r.doc().contains("global")) {
-          if (!r.doc()["global"].is_boolean()) r.fail("/global", "must be true or false");
-          no.global = r.doc()["global"].get<bool>();
-        }
-        NloptFitResult fit;
-        try {
-          fit = fit_string_to_curve(curve, no);
-        } catch (const std::invalid_argument& e) {
-          r.fail("/algorithm", e.what());
-        }
-        j["method"] = "NLopt " + fit.algorithm + " from the closed-form seed (bounds: alpha, theta limit with margin, min segment)";
-        j["nlopt"] = {{"status", fit.status}, {"evaluations", fit.evaluations}};
-        j["reachable"] = fit.reachable;
-        j["max_error"] = fit.max_error;
-        j["rms_error"] = fit.rms_error;
-        j["max_error_per_segment"] = fit.max_error / fit.mean_segment;
-        j["binding_bounds"] = fit.binding;
-        j["point_errors"] = fit.point_errors;
-        s = fit.string;
-        theta0 = fit.theta0;
-        design_pose = fit.pose;
-      }
-      have_pose = true;
-    }
-    apply_width(r, s, width);
-    StringState st;
-    try {
-      st = string_forward(s, theta0);  // the pattern pose (face 0 fixed)
-    } catch (const std::invalid_argument& e) {
-      r.fail("", std::string("designed string cannot fold at the design theta: ") + e.what());
-    }
-    const CreasePattern pattern = build_string_pattern(s, st.edge_fold_angles);
-    // Newton starts 1e-6 rad away from the closed form, so the solver has to converge on its own.
-    const StringVerification v = verify_string_with_general_solver(s, pattern, st, 1e-6);
-    j["theta0_deg"] = theta0 / kDeg;
-    j["width"] = s.width;
-    j["driven_crease"] = {{"edge", 0}, {"fold_angle_deg", 2 * theta0 / kDeg}, {"name", "s_0: lead-in spinal crease"}};
-    j["string"] = {{"alpha1_deg", json::array()}, {"alpha2_deg", json::array()}, {"segment_lengths", s.lengths}};
-    for (int i = 0; i < s.size(); ++i) {
-      j["string"]["alpha1_deg"].push_back(s.alpha1[i] / kDeg);
-      j["string"]["alpha2_deg"].push_back(s.alpha2[i] / kDeg);
-    }
-    json ver = {{"solver", "general loop closure, Newton projection from the closed form + 1e-6 rad, s_0 fixed"},
-                {"converged", v.converged},
-                {"iterations", v.iterations},
-                {"closure_residual_rad", v.closure_residual},
-                {"max_angle_difference_rad", v.max_angle_error},
-                {"max_spine_difference", v.max_spine_error}};
-    if (have_pose) {
-      // Folded pattern (pattern pose) -> target frame: the rigid map taking the pattern's
-      // C_0 to the design's C_0; no fitting.
-      const StringPose pp = pattern_pose(theta0);
-      const Eigen::Matrix3d Rm = design_pose.frame * pp.frame.transpose();
-      double worst = 0;
-      for (int k = 0; k < s.size() + 2; ++k) {
-        const Eigen::Vector3d q = Rm * (v.folded.vertices[k] - pp.start) + design_pose.start;
-        worst = std::max(worst, (q - curve[k]).norm());
-      }
-      double total = 0;  // mean TARGET segment, the same scale as the NLopt report
-      for (std::size_t k = 0; k + 1 < curve.size(); ++k) total += (curve[k + 1] - curve[k]).norm();
-      ver["max_target_error"] = worst;
-      ver["max_target_error_per_segment"] = worst / (total / (curve.size() - 1));
-    }
-    j["verification"] = ver;
-    // Outputs only after everything succeeded.
-    write_text_file_atomically(da->out, folded_fold_text(pattern, v.folded, v.solver_angles, "designed origami string"));
-    if (!da->svg.empty()) write_text_file_atomically(da->svg, string_pattern_svg(pattern));
-    j["out"] = da->out;
-    t << "designed origami string (" << kind << "), " << s.size() << " vertices, theta0 = " << theta0 / kDeg << " deg\n"
-      << "  method: " << j["method"].get<std::string>() << "\n"
-      << "  verification (general solver): converged " << (v.converged ? "yes" : "no") << ", residual " << v.closure_residual
-      << " rad, max angle difference " << v.max_angle_error << " rad, max spine difference " << v.max_spine_error << "\n";
-    if (ver.contains("max_target_error")) t << "  max distance to the target points: " << ver["max_target_error"].get<double>() << "\n";
-    if (j.contains("binding_bounds") && !j["binding_bounds"].empty()) {
-      t << "  binding bounds:";
-      for (const auto& b : j["binding_bounds"]) t << " " << b.get<std::string>() << ";";
-      t << "\n";
-    }
-    if (j.contains("reachable") && !j["reachable"].get<bool>()) t << "  target NOT reachable: best fit written\n";
-    t << "  wrote " << da->out << "\n";
-    print_or_json(j, da->json, t.str());
-  });
+  des->callback([da] { run_design(*da); });
+}
+
+}  // namespace
+
+void add_string_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("string", "Origami strings of asymmetric Miura vertices: forward kinematics and inverse design");
+  cmd->require_subcommand(1);
+  add_forward_subcommand(*cmd);
+  add_design_subcommand(*cmd);
 }
 
 }  // namespace rigidfold::cli
