@@ -1,12 +1,44 @@
-// rigidfold check PATTERN.fold [--ignore-assignment] [--json]
-// Rigid-foldability verdict. Exit 0 whether or not it folds; 2 on bad input.
+// rigidfold check PATTERN.fold [--ignore-assignment] [--general] [--json]
+// Rigid-foldability verdict (kernel/analysis/foldability_report.hpp: check_foldability).
+// Exit 0 whether or not it folds; 2 on bad input.
 #include <iostream>
 
 #include "app/commands.hpp"
 #include "app/foldability_json.hpp"
+#include "kernel/analysis/foldability_report.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 
 namespace rigidfold::cli {
+namespace {
+
+void print_text(const std::string& file, const FoldabilityReport& r) {
+  std::cout << file << ": " << to_string(r.verdict) << " (model: " << r.model_name << ")\n";
+  std::cout << "  " << r.reason << "\n";
+  if (r.foldable()) {
+    std::cout << "  DOF " << r.dof << ", max closure residual along the branch " << r.max_residual << " rad";
+    if (r.certificate_mismatch) std::cout << ", certificate mismatch " << *r.certificate_mismatch;
+    std::cout << "\n";
+  }
+  if (r.obstruction) std::cout << "  obstruction: " << r.obstruction->message << "\n";
+  if (r.model == FoldabilityModel::kGivenStateHoleClosure)
+    for (const TracedBranch& b : r.branches)
+      std::cout << "  branch " << b.id << " from the given state: crease " << b.driving_edge << " "
+                << to_degrees(b.driving_begin) << " -> " << to_degrees(b.driving_end) << " deg, stopped by "
+                << b.stop_text() << "\n";
+  if (r.branches_explored) {
+    int keep = 0;
+    for (const TracedBranch& b : r.branches) keep += r.assignment_used && b.signs_match_assignment;
+    std::cout << "  branches: " << r.branches.size() << " traced through " << r.points.size() << " points; " << keep
+              << " keep every letter from their start\n";
+    for (const BranchPoint& p : r.points)
+      if (p.kind == PointKind::kBifurcation)
+        std::cout << "  bifurcation where crease " << p.parameter_edge << " is at " << to_degrees(p.parameter)
+                  << " deg (+-" << p.parameter_uncertainty << " rad), " << p.tangent_lines << " tangent lines\n";
+  }
+}
+
+}  // namespace
 
 void add_check_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("check", "Rigid-foldability verdict with certificate or obstruction");
@@ -22,36 +54,17 @@ void add_check_command(CLI::App& app) {
   cmd->callback([a] {
     const CreasePattern p = read_fold(a->pattern);
     const Topology t = build_topology(p, a->pattern);
-    nlohmann::ordered_json j = {{"file", a->pattern}};
-    j.update(foldability_json(p, t, a->ignore, a->general));
+    FoldabilityOptions options;
+    options.use_assignment = !a->ignore;
+    options.force_general = a->general;
+    const FoldabilityReport r = check_foldability(p, t, options);
     if (a->json) {
+      nlohmann::ordered_json j = {{"file", a->pattern}};
+      j.update(foldability_json(r));
       std::cout << j.dump(2) << "\n";
       return;
     }
-    std::cout << a->pattern << ": " << j["verdict"].get<std::string>() << " (model: " << j["model"].get<std::string>() << ")\n";
-    std::cout << "  " << j["reason"].get<std::string>() << "\n";
-    if (j["rigidly_foldable"] == true)
-    {
-      std::cout << "  DOF " << j["dof"] << ", max closure residual along the branch " << j["max_residual"].get<double>() << " rad";
-      if (j.contains("certificate_mismatch")) std::cout << ", certificate mismatch " << j["certificate_mismatch"].get<double>();
-      std::cout << "\n";
-    }
-    if (!j["obstruction"].is_null()) std::cout << "  obstruction: " << j["obstruction"]["message"].get<std::string>() << "\n";
-    if (j.contains("holes_closed"))
-      for (const auto& b : j["branches"])
-        std::cout << "  branch " << b["id"] << " from the given state: crease " << b["driving_crease"] << " "
-                  << b["range_deg"][0].get<double>() << " -> " << b["range_deg"][1].get<double>() << " deg, stopped by "
-                  << b["stopped_by"].get<std::string>() << "\n";
-    if (j.contains("branch_exploration") && j["branch_exploration"].is_object()) {
-      int keep = 0;
-      for (const auto& b : j["branches"]) keep += b.value("signs_match_assignment", false) == true;
-      std::cout << "  branches: " << j["branches"].size() << " traced through " << j["branch_exploration"]["points"]
-                << " points; " << keep << " keep every letter from their start\n";
-      for (const auto& b : j["bifurcations"])
-        if (b["kind"] == "bifurcation")
-          std::cout << "  bifurcation where crease " << b["parameter_crease"] << " is at " << b["parameter"].get<double>() << " deg (+-" << b["location_uncertainty_rad"].get<double>()
-                    << " rad), " << b["tangent_lines"] << " tangent lines\n";
-    }
+    print_text(a->pattern, r);
   });
 }
 

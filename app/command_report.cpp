@@ -11,49 +11,26 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <numbers>
 #include <sstream>
 
 #include "app/commands.hpp"
 #include "app/foldability_json.hpp"
+#include "kernel/analysis/foldability_report.hpp"
+#include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/geometry/face_placement.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/pattern/flat_foldability.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
-#include "kernel/vertex/flat_foldable_multipliers.hpp"
 
 namespace rigidfold::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-// Modes of a flat-foldable degree-4 vertex whose sign pattern matches the assignment.
-std::vector<std::string> compatible_modes(const CreasePattern& p, const Fan& fan) {
-  std::vector<std::string> modes;
-  const std::array<double, 4> sectors{fan.sectors[0], fan.sectors[1], fan.sectors[2], fan.sectors[3]};
-  for (auto mode : {FlatFoldMode::kEqual13, FlatFoldMode::kEqual02}) {
-    const auto m = flat_fold_multipliers(sectors, mode);
-    for (double s : {1.0, -1.0}) {
-      bool ok = true;
-      for (int i = 0; i < 4; ++i) {
-        const Assignment a = p.assignments[fan.edges[i]];
-        const double sign = s * m.direction[i];
-        if (a == Assignment::Valley) ok = ok && sign > 1e-12;
-        if (a == Assignment::Mountain) ok = ok && sign < -1e-12;
-      }
-      if (ok) {
-        modes.push_back(to_string(mode));
-        break;
-      }
-    }
-  }
-  return modes;
-}
 
 Json analyse(const fs::path& file, const fs::path& out_dir) {
   const auto start = std::chrono::steady_clock::now();
@@ -83,15 +60,17 @@ Json analyse(const fs::path& file, const fs::path& out_dir) {
     const Fan& fan = t.stars[r.vertex].fans[0];
     if (fan.edges.size() == 4 && r.degree == 4 && r.kawasaki) {
       ++degree4;
-      const auto modes = compatible_modes(p, fan);
-      v["modes_matching_assignment"] = modes;
+      const std::vector<FlatFoldMode> modes = modes_matching_letters(p, fan);
+      Json names = Json::array();
+      for (FlatFoldMode m : modes) names.push_back(to_string(m));
+      v["modes_matching_assignment"] = names;
       if (modes.empty() && r.unassigned == 0) ++obstructed;
     }
     vertices.push_back(v);
   }
   j["kawasaki_ok"] = kawasaki;
   j["maekawa_ok"] = maekawa;
-  j["worst_kawasaki_residual_deg"] = worst_kawasaki * kDeg;
+  j["worst_kawasaki_residual_deg"] = to_degrees(worst_kawasaki);
   j["flat_foldable_degree4_vertices"] = degree4;
   j["locally_obstructed_vertices"] = obstructed;
   std::string local;
@@ -99,8 +78,10 @@ Json analyse(const fs::path& file, const fs::path& out_dir) {
   else if (kawasaki == static_cast<int>(ff.size()) && maekawa == static_cast<int>(ff.size())) local = "every vertex locally flat-foldable";
   else local = "some vertices not flat-foldable";
   j["local_verdict"] = local;
-  j["check"] = foldability_json(p, t, false);
-  j["check_ignoring_assignment"] = foldability_json(p, t, true);
+  FoldabilityOptions with_letters, without_letters;
+  without_letters.use_assignment = false;
+  j["check"] = foldability_json(check_foldability(p, t, with_letters));
+  j["check_ignoring_assignment"] = foldability_json(check_foldability(p, t, without_letters));
   j["vertex_details"] = vertices;
 
   bool has_angles = false;

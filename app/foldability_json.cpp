@@ -1,317 +1,177 @@
 #include "app/foldability_json.hpp"
 
-#include <chrono>
-#include <cmath>
-#include <numbers>
-
-#include "kernel/analysis/branch_explorer.hpp"
-#include "kernel/analysis/general_verdict.hpp"
-#include "kernel/analysis/multiplier_propagation.hpp"
-#include "kernel/analysis/reference_mobility.hpp"
-#include "kernel/closure/vertex_residuals.hpp"
+#include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
-// The check's "rigidly_foldable": true, false, or null when the models available did not decide.
-Json rigidly_foldable_json(Verdict v) {
-  if (v == Verdict::kRigidlyFoldable) return true;
-  if (v == Verdict::kNotRigidlyFoldable) return false;
-  return nullptr;
+// The three-valued summary the JSON has always carried beside the class.
+const char* summary(const FoldabilityReport& r) {
+  if (r.foldable()) return to_string(Verdict::kRigidlyFoldable);
+  if (r.not_foldable()) return to_string(Verdict::kNotRigidlyFoldable);
+  return to_string(Verdict::kUndecided);
 }
 
-Json obstruction_json(const Obstruction& o) {
-  Json j;
-  j["kind"] = to_string(o.kind);
-  j["message"] = o.message;
-  if (!o.cycle_vertices.empty()) j["loop_vertices"] = o.cycle_vertices;
-  if (!o.cycle_creases.empty()) j["loop_creases"] = o.cycle_creases;
-  if (o.vertex >= 0) j["vertex"] = o.vertex;
-  if (o.crease >= 0) j["crease"] = o.crease;
-  if (o.kind == Obstruction::Kind::kLoopGain) {
-    j["loop_gain"] = o.loop_gain;
-    j["loop_gain_defect"] = o.defect;
+Json degrees(const Eigen::VectorXd& radians) {
+  Json a = Json::array();
+  for (Eigen::Index i = 0; i < radians.size(); ++i) a.push_back(to_degrees(radians[i]));
+  return a;
+}
+
+Json switches_json(const std::vector<SignSwitch>& switches) {
+  Json sw = Json::array();
+  for (const SignSwitch& s : switches)
+    sw.push_back({{"crease", s.crease}, {"driving_deg", to_degrees(s.driving_value)}, {"against_assignment", s.against_assignment}});
+  return sw;
+}
+
+Json tolerances_json(const Tolerances& t) {
+  return {{"residual_rad", t.residual},
+          {"certificate_residual_rad", t.certificate_residual},
+          {"rank_cut_relative", t.rank_cut},
+          {"cone_rank_cut_relative", t.cone_rank_cut},
+          {"sign_threshold_rad", t.sign_threshold},
+          {"fold_limit_deg", to_degrees(t.fold_limit())},
+          {"at_180_rad", t.at_fold_limit},
+          {"placement_mismatch_relative", t.placement_mismatch},
+          {"kawasaki_rad", t.flat_kawasaki},
+          {"loop_gain_relative", t.loop_gain}};
+}
+
+Json branch_json(const TracedBranch& b, const FoldabilityReport& r) {
+  Json jb;
+  jb["id"] = b.id;
+  if (r.model == FoldabilityModel::kGivenStateHoleClosure) {
+    jb["from_point"] = "given state";
+    jb["sense"] = b.sense;
+  } else {
+    jb["from_point"] = b.from_point;
+    jb["to_point"] = b.to_point >= 0 ? Json(b.to_point) : Json(nullptr);
   }
-  return j;
-}
-
-// The keys every traced branch reports, from the branch explorer (BranchTrace) or from a
-// sheet's given state (MobilityBranch): both carry these fields under the same names.
-template <class TracedBranch>
-void add_traced_branch_keys(Json& jb, const TracedBranch& b, bool ignore_assignment) {
-  jb["signs_match_assignment"] = ignore_assignment ? Json(nullptr) : Json(b.signs_match_assignment);
+  jb["dof"] = b.dof_at_departure;
+  jb["signs_match_assignment"] = r.assignment_used ? Json(b.signs_match_assignment) : Json(nullptr);
   if (!b.signs_match_assignment && b.first_wrong_crease >= 0) jb["first_crease_against_assignment"] = b.first_wrong_crease;
   jb["driving_crease"] = b.driving_edge;
-  jb["range_deg"] = {b.driving_begin * kDeg, b.driving_end * kDeg};
-  jb["max_fold_deg"] = b.max_fold * kDeg;
-  jb["stopped_by"] = b.stopped_by;
+  jb["range_deg"] = {to_degrees(b.driving_begin), to_degrees(b.driving_end)};
+  jb["max_fold_deg"] = to_degrees(b.max_fold);
+  jb["stopped_by"] = b.stop_text();
   if (b.stop_crease >= 0) jb["stop_crease"] = b.stop_crease;
   jb["max_residual"] = b.max_residual;
   jb["points"] = b.path.size();
-  Json sw = Json::array();
-  for (const SignSwitch& s : b.sign_switches)
-    sw.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
-  jb["mv_switches"] = sw;
+  if (b.valid_points >= 0) jb["valid_points"] = b.valid_points;
+  jb["mv_switches"] = switches_json(b.sign_switches);
+  if (r.model != FoldabilityModel::kMultiplierPropagation) {
+    Json gi = nullptr;
+    if (b.global_interference_faces.first >= 0) {
+      gi = {{"faces", {b.global_interference_faces.first, b.global_interference_faces.second}}};
+      if (b.global_interference_index >= 0) gi["from_driving_deg"] = to_degrees(b.global_interference_driving);
+    }
+    jb["global_interference"] = gi;
+  }
+  return jb;
 }
 
-// The general loop-closure solver's verdict: a traced branch from near flat (yes), or the
-// least residual reached at a small fold (no: numerical evidence, not a proof).
-Json general_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, const std::string& why_general) {
-  GeneralVerdictOptions options;
-  options.use_assignment = !ignore_assignment;
-  const GeneralVerdict g = general_verdict(p, t, options);
-  Json j;
-  j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
-  j["verdict"] = to_string(g.verdict);
-  j["rigidly_foldable"] = rigidly_foldable_json(g.verdict);
-  j["model"] = g.model;
-  j["model_choice"] = why_general;
-  j["reason"] = g.reason;
-  j["is_proof"] = g.verdict == Verdict::kRigidlyFoldable || g.is_proof;
-  j["dof"] = g.verdict == Verdict::kRigidlyFoldable ? std::max(g.dof, 0) : 0;
-  j["dof_tolerance"] = "rank of the closure Jacobian at the traced point, singular values below 1e-9 x largest dropped";
-  // Every branch through the flat state and its bifurcations, where the pattern is small
-  // enough for the dense second-order analysis (branch_explorer.hpp).
-  BranchExplorerOptions xo;
-  const BranchExploration x = explore_branches(p, t, xo);
-  Json branches = Json::array();
-  Json bifurcations = Json::array();
-  bool explored_yes = false;
-  if (x.applicable) {
-    for (const BranchTrace& b : x.branches) {
-      Json jb;
-      jb["id"] = b.id;
-      jb["from_point"] = b.from_point;
-      jb["to_point"] = b.to_point >= 0 ? Json(b.to_point) : Json(nullptr);
-      jb["dof"] = b.dof_at_departure;
-      add_traced_branch_keys(jb, b, ignore_assignment);
-      jb["global_interference"] =
-          b.global_interference_index < 0
-              ? Json(nullptr)
-              : Json({{"from_driving_deg", b.global_interference_driving * kDeg},
-                      {"faces", {b.global_interference_faces.first, b.global_interference_faces.second}}});
-      branches.push_back(jb);
-      // A branch from flat with every letter kept (or letters ignored), no face crossing,
-      // reaching the certificate fold: a rigid folding motion.
-      const bool letters_ok = ignore_assignment || b.signs_match_assignment;
-      int valid = static_cast<int>(b.path.size());
-      if (b.global_interference_index >= 0) valid = b.global_interference_index;
-      double reach = 0;
-      for (int k = 0; k < valid; ++k) reach = std::max(reach, std::min(b.path[k].cwiseAbs().maxCoeff(), std::numbers::pi));
-      if (b.from_point == 0 && letters_ok && b.dof_at_departure == 1 && reach >= options.certificate_fold &&
-          b.max_residual <= 1e-10)
-        explored_yes = true;
-    }
-    for (std::size_t i = 0; i < x.points.size(); ++i) {
-      const BranchPoint& pt = x.points[i];
-      if (pt.kind != "flat" && pt.kind != "bifurcation") continue;
-      std::vector<double> deg(pt.angles.data(), pt.angles.data() + pt.angles.size());
-      for (double& d : deg) d *= kDeg;
-      Json jp;
-      jp["point"] = i;
-      jp["kind"] = pt.kind;
-      if (pt.kind == "bifurcation") {
-        jp["parameter"] = pt.parameter * kDeg;
-        jp["parameter_crease"] = pt.parameter_edge;
-        jp["parameter_kind"] = "fold angle of crease " + std::to_string(pt.parameter_edge) + " (deg), the arriving branch's driving crease";
-        jp["location_uncertainty_rad"] = pt.parameter_uncertainty;
-        jp["sigma_ratio"] = pt.sigma_second_smallest / std::max(pt.sigma_max, 1e-300);
-      } else {
-        jp["parameter"] = 0.0;
-      }
-      jp["kernel_dimension"] = pt.kernel_dimension;
-      jp["tangent_lines"] = pt.tangent_lines;
-      jp["angles_deg"] = deg;
-      bifurcations.push_back(jp);
-    }
+Json point_json(std::size_t index, const BranchPoint& pt, const FoldabilityReport& r) {
+  Json jp;
+  jp["point"] = index;
+  if (r.model == FoldabilityModel::kMultiplierPropagation) {
+    jp["kind"] = "flat state: every vertex's two modes meet (singular; first-order rank inconclusive)";
+    jp["parameter"] = 0.0;
+    jp["angles_deg"] = degrees(pt.angles);
+    return jp;
+  }
+  jp["kind"] = to_string(pt.kind);
+  if (pt.kind == PointKind::kBifurcation) {
+    jp["parameter"] = to_degrees(pt.parameter);
+    jp["parameter_crease"] = pt.parameter_edge;
+    jp["parameter_kind"] = "fold angle of crease " + std::to_string(pt.parameter_edge) + " (deg), the arriving branch's driving crease";
+    jp["location_uncertainty_rad"] = pt.parameter_uncertainty;
+    jp["sigma_ratio"] = pt.sigma_second_smallest / std::max(pt.sigma_max, 1e-300);
   } else {
-    for (const auto& s : g.singular_points) {
-      std::vector<double> deg(s.angles.data(), s.angles.data() + s.angles.size());
-      for (double& d : deg) d *= kDeg;
-      bifurcations.push_back({{"parameter", s.driving_value * kDeg}, {"parameter_kind", "driving crease fold angle (deg)"},
-                              {"angles_deg", deg}, {"kind", "singular point (bordered determinant changes sign); not refined (pattern too large for the branch explorer)"}});
+    jp["parameter"] = 0.0;
+  }
+  jp["kernel_dimension"] = pt.kernel_dimension;
+  jp["tangent_lines"] = pt.tangent_lines;
+  jp["angles_deg"] = degrees(pt.angles);
+  return jp;
+}
+
+Json obstruction_json(const FoldabilityObstruction& o) {
+  Json j;
+  j["kind"] = o.kind;
+  j["message"] = o.message;
+  if (o.exact) {
+    const Obstruction& e = *o.exact;
+    if (!e.cycle_vertices.empty()) j["loop_vertices"] = e.cycle_vertices;
+    if (!e.cycle_creases.empty()) j["loop_creases"] = e.cycle_creases;
+    if (e.vertex >= 0) j["vertex"] = e.vertex;
+    if (e.crease >= 0) j["crease"] = e.crease;
+    if (e.kind == Obstruction::Kind::kLoopGain) {
+      j["loop_gain"] = e.loop_gain;
+      j["loop_gain_defect"] = e.defect;
     }
-    if (g.verdict == Verdict::kRigidlyFoldable)
-      branches.push_back({{"id", 0},
-                          {"signs_match_assignment", ignore_assignment ? Json(nullptr) : Json(g.sign_switches.empty())},
-                          {"range_deg", {0.0, g.max_fold * kDeg}},
-                          {"stopped_by", g.stopped_by},
-                          {"max_residual", g.max_residual},
-                          {"driving_crease", g.driving_crease},
-                          {"points", g.path.size()}});
   }
-  if (g.verdict == Verdict::kRigidlyFoldable) j["certificate_mismatch"] = g.certificate_mismatch;
-  if (g.verdict != Verdict::kRigidlyFoldable && explored_yes) {
-    j["verdict"] = to_string(Verdict::kRigidlyFoldable);
-    j["rigidly_foldable"] = true;
-    j["reason"] = "a branch leaving the flat state keeps every letter and reaches the certificate fold (branch explorer); " + g.reason;
-    j["dof"] = 1;
-  }
-  j["branches"] = branches;
-  j["branch_exploration"] = x.applicable ? Json({{"points", x.points.size()}, {"branches", x.branches.size()}, {"seconds", x.seconds}})
-                                         : Json(x.why_not);
-  j["bifurcations"] = bifurcations;
-  Json switches = Json::array();
-  for (const auto& s : g.sign_switches)
-    switches.push_back({{"crease", s.crease}, {"driving_deg", s.driving_value * kDeg}, {"against_assignment", s.against_assignment}});
-  j["mv_switches"] = switches;
-  if (g.verdict == Verdict::kNotRigidlyFoldable) {
-    Json o;
-    o["kind"] = "no folded point found near flat";
-    o["message"] = g.reason;
-    o["least_residual"] = g.least_residual;
+  if (o.least_residual >= 0) j["least_residual"] = o.least_residual;
+  if (!o.worst_vertices.empty() || o.starts_tried >= 0) {
     Json worst = Json::array();
-    for (auto [v, r] : g.worst_vertices) worst.push_back({{"vertex", v}, {"residual", r}});
-    o["worst_vertices"] = worst;
-    if (g.wrong_sign_crease >= 0) o["crease_against_assignment"] = g.wrong_sign_crease;
-    o["starts_tried"] = g.starts_tried;
-    o["starts_converged_against_assignment"] = g.starts_wrong_sign;
-    j["obstruction"] = o;
-  } else {
-    j["obstruction"] = nullptr;
+    for (auto [v, res] : o.worst_vertices) worst.push_back({{"vertex", v}, {"residual", res}});
+    j["worst_vertices"] = worst;
   }
-  j["max_residual"] = g.max_residual;
-  j["interference"] = x.applicable ? "local (a crease reaching 180 deg ends a branch) and global (faces crossing, FCL AABB tree) at every explored point"
-                                   : "local only (creases reaching 180 deg): pattern too large for the branch explorer";
-  j["seconds"] = g.seconds + x.seconds;
-  return j;
-}
-
-// Sheets with holes (tubes): mobility from the given 3D state with the SE(3) hole closures.
-Json mobility_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, int holes) {
-  ReferenceMobilityOptions options;
-  options.use_assignment = !ignore_assignment;
-  const ReferenceMobility m = reference_mobility(p, t, options);
-  Json j;
-  j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
-  j["verdict"] = to_string(m.verdict);
-  j["rigidly_foldable"] = rigidly_foldable_json(m.verdict);
-  j["model"] = "general loop-closure solver with SE(3) hole closures, from the given state";
-  j["model_choice"] = "the sheet has " + std::to_string(holes) +
-                      " hole(s): the multiplier model and the flat-state search do not apply; the given (3D) state is "
-                      "the reference";
-  j["reason"] = m.reason;
-  j["is_proof"] = m.verdict != Verdict::kUndecided;
-  j["dof"] = m.dof;
-  j["dof_tolerance"] = "rank of the closure Jacobian (vertex and hole rows) at the given state, singular values below "
-                       "1e-9 x largest dropped; kept " + std::to_string(m.sigma_kept) + ", dropped " +
-                       std::to_string(m.sigma_dropped);
-  j["holes_closed"] = m.holes;
-  j["reference_residual"] = m.reference_residual;
-  Json branches = Json::array();
-  for (const MobilityBranch& b : m.branches) {
-    Json jb;
-    jb["id"] = b.id;
-    jb["from_point"] = "given state";
-    jb["sense"] = b.sense;
-    jb["dof"] = m.dof;
-    add_traced_branch_keys(jb, b, ignore_assignment);
-    jb["valid_points"] = b.valid_points;
-    jb["global_interference"] =
-        b.interfering_faces.first < 0 ? Json(nullptr)
-                                      : Json({{"faces", {b.interfering_faces.first, b.interfering_faces.second}}});
-    branches.push_back(jb);
+  if (o.crease_against_assignment >= 0) j["crease_against_assignment"] = o.crease_against_assignment;
+  if (o.starts_tried >= 0) {
+    j["starts_tried"] = o.starts_tried;
+    j["starts_converged_against_assignment"] = o.starts_converged_against_assignment;
   }
-  j["branches"] = branches;
-  j["bifurcations"] = Json::array();
-  if (m.verdict == Verdict::kNotRigidlyFoldable)
-    j["obstruction"] = {{"kind", "first-order rigid"}, {"message", m.reason}, {"least_residual", m.reference_residual}};
-  else
-    j["obstruction"] = nullptr;
-  j["max_residual"] = m.max_residual;
-  j["interference"] = "local (a crease reaching 180 deg ends a branch) and global (faces crossing, FCL AABB tree) at every traced point";
-  j["seconds"] = m.seconds;
   return j;
 }
 
 }  // namespace
 
-Json foldability_json(const CreasePattern& p, const Topology& t, bool ignore_assignment, bool force_general) {
-  const auto start = std::chrono::steady_clock::now();
-  int holes = 0;
-  for (const Component& c : t.components) holes += c.holes;
-  if (holes > 0) return mobility_json(p, t, ignore_assignment, holes);
-  if (force_general) return general_json(p, t, ignore_assignment, "forced (--general)");
-  const FoldabilityVerdict v = ignore_assignment ? verdict_ignoring_assignment(p, t) : verdict_with_assignment(p, t);
-  if (v.verdict == Verdict::kNotApplicable) {
-    try {
-      return general_json(p, t, ignore_assignment, "multiplier propagation not applicable: " + v.reason);
-    } catch (const std::runtime_error& e) {  // e.g. holes: no SE(3) hole closure yet
-      Json j;
-      j["verdict"] = to_string(Verdict::kUndecided);
-      j["rigidly_foldable"] = nullptr;
-      j["model"] = "none";
-      j["reason"] = std::string("general solver unavailable for this pattern: ") + e.what();
-      j["dof"] = 0;
-      j["branches"] = Json::array();
-      j["bifurcations"] = Json::array();
-      j["obstruction"] = nullptr;
-      j["max_residual"] = 0.0;
-      j["seconds"] = 0.0;
-      return j;
-    }
-  }
+Json foldability_json(const FoldabilityReport& r) {
   Json j;
-  j["assignment"] = ignore_assignment ? "ignored" : "as given (sign constraints)";
-  j["verdict"] = to_string(v.verdict);
-  j["rigidly_foldable"] = rigidly_foldable_json(v.verdict);
-  j["model"] = v.model;
-  j["model_choice"] = "every interior vertex is a flat-foldable degree-4 vertex: exact O(creases) model";
-  j["is_proof"] = true;
-  j["reason"] = v.reason;
-  j["dof"] = v.verdict == Verdict::kRigidlyFoldable ? v.dof : 0;
-  Json branches = Json::array();
-  Json bifurcations = Json::array();
-  double max_residual = 0;
-  if (v.verdict == Verdict::kRigidlyFoldable && v.family) {
-    // The family tan(rho_e/2) = m_e * t: sample it from flat to just short of the fully
-    // folded state (the first crease reaching 180 deg) and record the closure residual.
-    const FoldFamily& fam = *v.family;
-    int limiting = -1;
-    double largest = 0;
-    for (int e = 0; e < p.num_edges(); ++e)
-      if (fam.component[e] >= 0 && std::fabs(fam.multiplier[e]) > largest) {
-        largest = std::fabs(fam.multiplier[e]);
-        limiting = e;
-      }
-    for (int c = 0; c < fam.num_components; ++c) {
-      double worst = 0, reached = 0;
-      bool signs_ok = true;
-      for (int k = 1; k <= 64; ++k) {
-        const double lead = (179.0 / kDeg) * k / 64;  // fold of the fastest crease
-        std::vector<double> params(fam.num_components, 0.0);
-        params[c] = limiting >= 0 ? fam.parameter_for(limiting, lead) : std::tan(lead / 2);
-        const Eigen::VectorXd rho = fam.angles(params);
-        worst = std::max(worst, max_vertex_closure_residual(t, rho));
-        reached = std::max(reached, rho.cwiseAbs().maxCoeff());
-        for (int e = 0; e < p.num_edges(); ++e) {
-          if (p.assignments[e] == Assignment::Mountain && rho[e] > 0) signs_ok = false;
-          if (p.assignments[e] == Assignment::Valley && rho[e] < 0) signs_ok = false;
-        }
-      }
-      max_residual = std::max(max_residual, worst);
-      branches.push_back({{"id", c},
-                          {"signs_match_assignment", signs_ok},
-                          {"range_deg", {0.0, reached * kDeg}},
-                          {"stopped_by", "fully folded: crease " + std::to_string(limiting) + " reaches 180 deg (local interference limit)"},
-                          {"max_residual", worst}});
-    }
-    bifurcations.push_back({{"parameter", 0.0},
-                            {"angles_deg", std::vector<double>(p.num_edges(), 0.0)},
-                            {"kind", "flat state: every vertex's two modes meet (singular; first-order rank inconclusive)"}});
-    j["certificate_mismatch"] = v.certificate_mismatch;
-    j["certificate_max_fold_deg"] = v.certificate_max_fold * kDeg;
-    j["max_loop_gain_defect"] = v.max_loop_defect;
+  j["assignment"] = r.assignment_used ? "as given (sign constraints)" : "ignored";
+  j["verdict"] = summary(r);
+  j["verdict_class"] = to_string(r.verdict);
+  j["rigidly_foldable"] = r.foldable() ? Json(true) : r.not_foldable() ? Json(false) : Json(nullptr);
+  j["is_proof"] = r.is_proof;
+  j["model"] = r.model_name;
+  j["model_choice"] = r.model_choice;
+  j["reason"] = r.reason;
+  j["dof"] = r.dof;
+  j["dof_tolerance"] = r.dof_basis;
+  j["tolerances"] = tolerances_json(r.tolerances);
+  if (r.model == FoldabilityModel::kGivenStateHoleClosure) {
+    j["holes_closed"] = r.holes_closed;
+    j["reference_residual"] = r.reference_residual;
   }
+  if (r.certificate_mismatch) j["certificate_mismatch"] = *r.certificate_mismatch;
+  if (r.certificate_max_fold) j["certificate_max_fold_deg"] = to_degrees(*r.certificate_max_fold);
+  if (r.max_loop_gain_defect) j["max_loop_gain_defect"] = *r.max_loop_gain_defect;
+  Json branches = Json::array();
+  for (const TracedBranch& b : r.branches) branches.push_back(branch_json(b, r));
   j["branches"] = branches;
-  j["bifurcations"] = bifurcations;
-  j["obstruction"] = v.obstruction ? obstruction_json(*v.obstruction) : Json(nullptr);
-  j["max_residual"] = max_residual;
-  j["interference"] = "local only (creases reaching 180 deg); global face-face test not yet implemented";
-  j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (r.model == FoldabilityModel::kGeneralLoopClosure)
+    j["branch_exploration"] = r.branches_explored ? Json({{"points", r.points.size()}, {"branches", r.branches.size()},
+                                                          {"seconds", r.exploration_seconds}})
+                                                  : Json(r.exploration_note);
+  Json points = Json::array();
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const PointKind k = r.points[i].kind;
+    if (k == PointKind::kFlat || k == PointKind::kBifurcation) points.push_back(point_json(i, r.points[i], r));
+  }
+  for (const SingularPoint& s : r.unrefined_singular_points)
+    points.push_back({{"parameter", to_degrees(s.driving_value)},
+                      {"parameter_kind", "driving crease fold angle (deg)"},
+                      {"angles_deg", degrees(s.angles)},
+                      {"kind", "singular point (bordered determinant changes sign); not refined (pattern too large for the branch explorer)"}});
+  j["bifurcations"] = points;
+  if (r.model == FoldabilityModel::kGeneralLoopClosure) j["mv_switches"] = switches_json(r.sign_switches);
+  j["obstruction"] = r.obstruction ? obstruction_json(*r.obstruction) : Json(nullptr);
+  j["max_residual"] = r.max_residual;
+  j["interference"] = r.interference_checked;
+  j["seconds"] = r.seconds;
   return j;
 }
 

@@ -1,22 +1,20 @@
 #pragma once
-// The foldability verdict of a pattern as the JSON object `rigidfold check --json` prints
-// (also embedded per pattern in `rigidfold report`).
+// The JSON of a foldability report (kernel/analysis/foldability_report.hpp), as
+// `rigidfold check --json` prints it and `rigidfold report` embeds it per pattern. This file
+// only serialises: every value, verdict and flag comes from the kernel's report.
 #include <nlohmann/json.hpp>
 
-#include "kernel/pattern/crease_pattern.hpp"
-#include "kernel/pattern/topology.hpp"
+#include "kernel/analysis/foldability_report.hpp"
 
 namespace rigidfold::cli {
 
-// Keys: rigidly_foldable (bool, or null when undecided), verdict, model, reason, dof,
-// branches [{id, signs_match_assignment, range_deg, stopped_by, max_residual}],
-// bifurcations [{parameter, angles_deg, kind}], obstruction (null or object),
-// max_residual (rad), certificate_mismatch (relative), interference, seconds.
-// The model is the cheapest exact one that applies: multiplier propagation (flat-foldable
-// degree-4 vertices; its yes and no are both exact), else the general loop-closure solver
-// (a yes is a traced branch; a no is numerical evidence, flagged by is_proof = false).
-// force_general: skip multiplier propagation even where it applies (for cross-checks).
-nlohmann::ordered_json foldability_json(const CreasePattern& pattern, const Topology& topology, bool ignore_assignment,
-                                        bool force_general = false);
+// Keys: assignment, verdict (the three-valued summary: rigidly-foldable, not-rigidly-foldable,
+// undecided), verdict_class (the five classes of DESIGN.md), rigidly_foldable (bool, or null
+// when undecided), is_proof, model, model_choice, reason, dof, dof_tolerance, tolerances,
+// branches [{id, signs_match_assignment, driving_crease, range_deg, max_fold_deg, stopped_by,
+// max_residual, points, mv_switches, ...}], bifurcations [{parameter, kind, angles_deg, ...}],
+// mv_switches, obstruction (null or object), max_residual (rad), certificate_mismatch
+// (relative), interference, seconds; holes_closed, reference_residual for sheets with holes.
+nlohmann::ordered_json foldability_json(const FoldabilityReport& report);
 
 }  // namespace rigidfold::cli

@@ -13,16 +13,17 @@
 //      (locate_singular_point) and added as a point (or matched with a known one). Its
 //      tangent cone gives new departures: every line, both sides, except directions already
 //      used by a branch at that point (the way we came in, and branches traced before).
-//   3. A branch stops at: a bifurcation ("bifurcation"); a crease reaching +-fold_limit
-//      ("fold limit": local facet interference if the others are not at 0 or +-pi, the
-//      fully folded state if they all are). The exact point where that crease is at +-pi is
-//      then solved for (Newton with it held) and added as a point of kind "interference" or
-//      "fully folded"; departures are taken from a fully folded point too, but only those
-//      that fold back (no crease beyond pi). Other stops: "reached a known point",
-//      "step too small", "not 1 DOF", "max points".
-//   4. Along each branch: sign switches of creases relative to the branch's first point,
-//      with the branch's driving crease value at the crossing; whether the pattern's M/V
-//      letters hold over the whole branch (zero counts as either sign).
+//   3. A branch stops at: a bifurcation (kBifurcation); a crease reaching +-fold_limit()
+//      (kFoldLimit: local facet interference if the others are not at 0 or +-pi, the fully
+//      folded state if they all are). The exact point where that crease is at +-pi is then
+//      solved for (solve_fold_limit_end) and added as a point of kind kInterference or
+//      kFullyFolded; departures are taken from a fully folded point too, but only those
+//      that fold back (no crease beyond pi). Other stops: kKnownPoint, kContinuationFailed
+//      ("step too small", "not 1 DOF"), kMaxPoints, kDepartureFailed.
+//   4. Along each branch (PathWatch, path_watch.hpp, first segment skipped: it leaves a
+//      singular point): sign switches of creases, with the branch's driving crease value at
+//      the crossing; whether the pattern's M/V letters hold over the whole branch (zero
+//      counts as either sign); global facet interference (facet_interference.hpp).
 // The exploration is breadth-first and bounded (max_branches).
 //
 // Units: radians inside; per-edge fold angles with the FOLD sign (valley > 0).
@@ -34,7 +35,8 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/analysis/general_verdict.hpp"  // SignSwitch
+#include "kernel/analysis/tolerances.hpp"
+#include "kernel/analysis/traced_branch.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/continuation.hpp"
@@ -44,8 +46,9 @@ namespace rigidfold {
 
 struct BranchExplorerOptions {
   double departure_step = 2e-3;       // distance from a point to the first branch point (radians)
-  double fold_limit = 3.1405926535897932;  // pi - 1e-3
-  double zero_tolerance = 1e-10;      // |rho| at most this counts as flat (no sign)
+  // fold_limit() ends a branch, sign_threshold (|rho| at most this has no sign), rank_cut
+  // (DOF of a branch not traced) and cone_rank_cut (tangent cones) come from here.
+  Tolerances tolerances = kDefaultTolerances;
   double locate_tolerance = 1e-10;    // bracket on the path parameter of a bifurcation (radians)
   double same_point = 1e-6;           // |x - y|_inf below this: the same point
   double same_direction = 0.995;      // cosine above this: the same departure direction
@@ -60,11 +63,11 @@ struct BranchExplorerOptions {
     c.tolerance = 5e-13;
     return c;
   }();
-  TangentConeOptions cone;
+  TangentConeOptions cone;           // its rank_tolerance is replaced by tolerances.cone_rank_cut
 };
 
 struct BranchPoint {
-  std::string kind;                   // "flat", "bifurcation", "fully folded", "interference"
+  PointKind kind = PointKind::kFlat;
   Eigen::VectorXd angles;             // per-edge fold angles (radians)
   int parameter_edge = -1;            // the edge whose fold angle is reported as the path parameter:
                                       // the arriving branch's driving crease, or the crease held at +-pi
@@ -79,34 +82,12 @@ struct BranchPoint {
   int stop_crease = -1;               // "interference" / "fully folded": the crease held at +-pi
 };
 
-struct BranchTrace {
-  int id = 0;
-  int from_point = -1, to_point = -1; // indices into BranchExploration::points (-1: open end)
-  int driving_edge = -1;              // the edge that moves most at departure
-  std::vector<Eigen::VectorXd> path;  // per-edge fold angles at every accepted point (radians)
-  std::vector<double> residuals;      // ||r||_inf at every point
-  double max_residual = 0.0;
-  double max_fold = 0.0;              // max |rho| over the path
-  double driving_begin = 0.0, driving_end = 0.0;  // driving edge's angle at the ends (radians)
-  bool signs_match_assignment = true; // every M/V crease agrees with its letter (or is 0) all along
-  int first_wrong_crease = -1;
-  std::string stopped_by;
-  int stop_crease = -1;
-  int dof_at_departure = -1;          // 1 for a traced branch; >1: a multi-DOF family, not traced
-  // Global facet interference (non-adjacent faces crossing): first path index where it is
-  // found (-1 if never), the driving crease's angle there, and one crossing face pair.
-  int global_interference_index = -1;
-  double global_interference_driving = 0.0;
-  std::pair<int, int> global_interference_faces{-1, -1};
-  std::vector<SignSwitch> sign_switches;
-};
-
 struct BranchExploration {
   bool applicable = false;
   std::string why_not;                // when not applicable
   int num_unknowns = 0;
   std::vector<BranchPoint> points;    // points[0] is the flat state
-  std::vector<BranchTrace> branches;
+  std::vector<TracedBranch> branches;  // from_point / to_point index `points`
   double seconds = 0.0;
 };
 

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "kernel/analysis/path_watch.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
@@ -21,11 +22,11 @@ namespace {
 
 double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
-// Assigned sign per edge: -1 M, +1 V, 0 otherwise (or when letters are ignored).
+// Assigned sign per edge (assigned_fold_sign), or all 0 when letters are ignored.
 std::vector<int> assigned_signs(const CreasePattern& p, bool use) {
   std::vector<int> s(p.num_edges(), 0);
-  if (!use) return s;
-  for (int e = 0; e < p.num_edges(); ++e) s[e] = assigned_fold_sign(p.assignments[e]);
+  if (use)
+    for (int e = 0; e < p.num_edges(); ++e) s[e] = assigned_fold_sign(p.assignments[e]);
   return s;
 }
 
@@ -57,88 +58,72 @@ struct Tracer {
   const ClosureSystem& sys;
   const std::vector<int>& sign;
   const GeneralVerdictOptions& opt;
-  int driving_edge;
-  GeneralVerdict& out;
-  Eigen::VectorXd start_rho;
-  Eigen::VectorXd prev_rho;
-  std::vector<bool> switched;
+  TracedBranch& trace;
+  PathWatch watch;
   // Bordered-determinant test for DOF-1 traces (bordered_determinant.hpp): a sign change
   // between consecutive points means the Jacobian lost rank in between (a candidate
   // bifurcation); a point where the DOF is not 1 is itself singular.
+  std::vector<SingularPoint>& singular_points;
   BorderedDeterminantMonitor bordered;
   bool bordered_active = false;
   Eigen::VectorXd prev_x;
-  int valid_points = 0;  // points of out.path with every letter respected
+  Eigen::VectorXd prev_rho;
+  int valid_points = 0;  // points of the path with every letter respected
 
   void start_bordered(const Eigen::VectorXd& x, const Eigen::VectorXd& direction) {
     bordered_active = bordered.step(dense_jacobian(sys, x), direction).applicable;
     prev_x = x;
   }
 
+  void stop(StopReason why, int crease = -1) {
+    if (trace.stopped_by != StopReason::kNone) return;
+    trace.stopped_by = why;
+    trace.stop_crease = crease;
+  }
+
   // Records the accepted point x; returns true to stop.
   bool accept(const Eigen::VectorXd& x) {
     const Eigen::VectorXd rho = sys.edges_from_unknowns(x);
-    out.max_residual = std::max(out.max_residual, inf_norm(sys.residual(x)));
-    if (out.path.empty()) {
-      start_rho = rho;
-      switched.assign(rho.size(), false);
-    }
-    out.path.push_back(rho);
-    bool stop = false;
+    trace.max_residual = std::max(trace.max_residual, inf_norm(sys.residual(x)));
+    trace.path.push_back(rho);
+    const PathWatch::Segment seg = watch.observe(rho);
+    trace.sign_switches.insert(trace.sign_switches.end(), seg.switches.begin(), seg.switches.end());
+    bool halt = false;
     bool invalid = false;
-    // Sign changes relative to the start.
-    if (out.path.size() > 1) {
-      for (int e = 0; e < rho.size(); ++e) {
-        if (switched[e] || std::abs(start_rho[e]) <= opt.zero_tolerance) continue;
-        if (start_rho[e] * rho[e] < 0 && std::abs(rho[e]) > opt.zero_tolerance) {
-          switched[e] = true;
-          const double f = prev_rho[e] / (prev_rho[e] - rho[e]);
-          SignSwitch s;
-          s.crease = e;
-          s.driving_value = prev_rho[driving_edge] + f * (rho[driving_edge] - prev_rho[driving_edge]);
-          s.against_assignment = sign[e] != 0 && sign[e] * rho[e] < 0;
-          out.sign_switches.push_back(s);
-        }
-      }
-    }
-    const int bad = wrong_sign(rho, sign, opt.zero_tolerance);
+    const int bad = opt.use_assignment ? seg.first_against_letter : -1;
     if (bad >= 0) {
-      out.stopped_by = "sign switch";
-      out.stop_crease = bad;
-      invalid = stop = true;
+      stop(StopReason::kSignSwitch, bad);
+      invalid = halt = true;
     }
-    int big = 0;
-    rho.cwiseAbs().maxCoeff(&big);
-    if (!invalid && std::abs(rho[big]) >= opt.fold_limit) {
-      out.stopped_by = "fold limit";
-      out.stop_crease = big;
-      stop = true;
-      if (std::abs(rho[big]) > std::numbers::pi) invalid = true;  // past 180 deg: faces pass through each other
+    if (!invalid && seg.fold_limit_crease >= 0) {
+      stop(StopReason::kFoldLimit, seg.fold_limit_crease);
+      halt = true;
+      if (std::abs(rho[seg.fold_limit_crease]) > std::numbers::pi) invalid = true;  // past 180 deg: faces pass through each other
     }
-    if (bordered_active && out.path.size() > 1) {
+    if (bordered_active && trace.path.size() > 1) {
       const BorderedDeterminantMonitor::Step st = bordered.step(dense_jacobian(sys, x), x - prev_x);
       prev_x = x;
       if (!st.applicable || st.sign_changed) {
         // Not applicable: the DOF jumped at an accepted point (a singular point right here).
         SingularPoint sp;
         sp.angles = !st.applicable ? rho : Eigen::VectorXd(prev_rho + st.fraction * (rho - prev_rho));
-        sp.driving_value = sp.angles[driving_edge];
+        sp.driving_value = sp.angles[trace.driving_edge];
         sp.max_fold = sp.angles.cwiseAbs().maxCoeff();
-        out.singular_points.push_back(sp);
-        if (out.stopped_by.empty()) out.stopped_by = "singular point";
-        stop = true;
+        singular_points.push_back(sp);
+        stop(StopReason::kSingularPoint);
+        halt = true;
       }
     }
     if (!invalid) {
-      valid_points = static_cast<int>(out.path.size());
-      out.max_fold = std::max(out.max_fold, rho.cwiseAbs().maxCoeff());
+      valid_points = static_cast<int>(trace.path.size());
+      trace.max_fold = std::max(trace.max_fold, rho.cwiseAbs().maxCoeff());
     }
     prev_rho = rho;
-    if (!stop && static_cast<int>(out.path.size()) >= opt.max_path_points) {
-      out.stopped_by = "max points";
-      stop = true;
+    if (!halt && static_cast<int>(trace.path.size()) >= opt.max_path_points) {
+      stop(StopReason::kMaxPoints);
+      halt = true;
     }
-    return stop;
+    return halt;
   }
 };
 
@@ -185,7 +170,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       }
       x0[k] = (sign[e] != 0 ? sign[e] : 1) * opt.held_value;
       NewtonOptions nopt;
-      nopt.tolerance = opt.residual_tolerance;
+      nopt.tolerance = opt.tolerances.residual;
       nopt.held_unknowns = {k};
       nopt.max_iterations = opt.least_squares_iterations;
       const NewtonResult nr = newton_project(sys, x0, nopt);
@@ -200,7 +185,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       }
       ++out.starts_converged;
       const Eigen::VectorXd rho = sys.edges_from_unknowns(nr.x);
-      const int bad = wrong_sign(rho, sign, opt.zero_tolerance);
+      const int bad = wrong_sign(rho, sign, opt.tolerances.sign_threshold);
       if (bad >= 0) {
         ++out.starts_wrong_sign;
         if (out.wrong_sign_crease < 0) out.wrong_sign_crease = bad;
@@ -242,37 +227,45 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   for (int c = 0; c < ntrace; ++c) {
     GeneralVerdict trial = out;
     const Candidate& cand = candidates[c];
-    trial.driving_crease = cand.edge;
+    trial.trace.driving_edge = cand.edge;
     Eigen::VectorXd r;
     Eigen::SparseMatrix<double> J;
     sys.evaluate(cand.x, r, J);
-    const RankResult rk = jacobian_rank(J);
-    trial.dof = rk.dof;
-    Tracer tr{sys, sign, opt, cand.edge, trial, {}, {}, {}, BorderedDeterminantMonitor(), false, {}, 0};
+    RankOptions ro;
+    ro.relative_tolerance = opt.tolerances.rank_cut;
+    const RankResult rk = jacobian_rank(J, ro);
+    trial.trace.dof_at_departure = rk.dof;
+    PathWatchOptions wo;
+    wo.tolerances = opt.tolerances;
+    Tracer tr{sys, sign, opt, trial.trace, PathWatch(pattern, cand.edge, wo), trial.singular_points};
     if (rk.dof == 1) {
       if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
       const ContinuationResult cr =
           continue_one_dof(sys, cand.x, cand.x, [&](const Eigen::VectorXd& x) { return tr.accept(x); },
                            opt.continuation);
-      if (trial.stopped_by.empty()) trial.stopped_by = cr.reason;
+      if (trial.trace.stopped_by == StopReason::kNone) {
+        trial.trace.stopped_by = StopReason::kContinuationFailed;
+        trial.trace.stop_message = cr.reason;
+      }
     } else {
       const int k = sys.unknown_of_edge(cand.edge);
       const double dir = cand.x[k] >= 0 ? 1.0 : -1.0;
       Eigen::VectorXd x = cand.x;
       NewtonOptions nopt;
-      nopt.tolerance = opt.residual_tolerance;
+      nopt.tolerance = opt.tolerances.residual;
       nopt.held_unknowns = {k};
       bool stop = tr.accept(x);
       while (!stop) {
         // Predictor: scale the whole point with the driving crease (keeps its shape and
         // signs); the corrector then moves it the least distance back onto the manifold.
-        const double target = std::abs(x[k]) + opt.driven_step >= opt.fold_limit
-                                  ? dir * opt.fold_limit
+        const double limit = opt.tolerances.fold_limit();
+        const double target = std::abs(x[k]) + opt.driven_step >= limit
+                                  ? dir * limit
                                   : x[k] + dir * opt.driven_step;
         Eigen::VectorXd x0 = x * (target / x[k]);
         const NewtonResult nr = newton_project(sys, x0, nopt);
         if (!nr.converged) {
-          trial.stopped_by = "corrector failed";
+          tr.stop(StopReason::kCorrectorFailed);
           break;
         }
         x = nr.x;
@@ -280,25 +273,30 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       }
     }
     if (tr.valid_points > 0) {
-      trial.certificate_angles = trial.path[tr.valid_points - 1];
+      trial.certificate_angles = trial.trace.path[tr.valid_points - 1];
+      trial.trace.valid_points = tr.valid_points;
       trial.certificate_mismatch =
           place_faces(pattern, topology, trial.certificate_angles, reference_fold_angles(pattern, topology))
               .relative_mismatch();
     }
-    const bool ok = trial.max_fold >= opt.certificate_fold && trial.certificate_mismatch >= 0 &&
-                    trial.certificate_mismatch <= opt.mismatch_tolerance;
+    if (!trial.trace.path.empty()) {
+      trial.trace.driving_begin = trial.trace.path.front()[cand.edge];
+      trial.trace.driving_end = trial.trace.path.back()[cand.edge];
+    }
+    const bool ok = trial.trace.max_fold >= opt.certificate_fold && trial.certificate_mismatch >= 0 &&
+                    trial.certificate_mismatch <= opt.tolerances.placement_mismatch;
     if (ok) {
       trial.verdict = Verdict::kRigidlyFoldable;
-      trial.is_proof = false;
+      trial.is_proof = true;  // the traced path is the certificate
       std::ostringstream why;
-      why << "traced a folding path to max |rho| = " << trial.max_fold << " rad (DOF " << trial.dof
-          << ", max residual " << trial.max_residual << ", placement mismatch " << trial.certificate_mismatch
-          << "); stopped by " << trial.stopped_by;
+      why << "traced a folding path to max |rho| = " << trial.trace.max_fold << " rad (DOF "
+          << trial.trace.dof_at_departure << ", max residual " << trial.trace.max_residual << ", placement mismatch "
+          << trial.certificate_mismatch << "); stopped by " << trial.trace.stop_text();
       trial.reason = why.str();
       out = std::move(trial);
       return finish();
     }
-    if (!have_best || trial.max_fold > best.max_fold) {
+    if (!have_best || trial.trace.max_fold > best.trace.max_fold) {
       best = std::move(trial);
       have_best = true;
     }
@@ -307,7 +305,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   out.verdict = Verdict::kUndecided;
   std::ostringstream why;
   why << "folded points found near flat but no trace reached " << opt.certificate_fold
-      << " rad (best " << out.max_fold << ", stopped by " << out.stopped_by << ")";
+      << " rad (best " << out.trace.max_fold << ", stopped by " << out.trace.stop_text() << ")";
   out.reason = why.str();
   return finish();
 }

@@ -14,12 +14,6 @@ namespace rigidfold {
 
 namespace {
 
-double letter_sign(Assignment a) {
-  if (a == Assignment::Valley) return 1.0;
-  if (a == Assignment::Mountain) return -1.0;
-  return 0.0;
-}
-
 int sign_of(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
 
 std::string letters_at(const CreasePattern& p, const std::array<int, 4>& creases) {
@@ -236,7 +230,7 @@ std::vector<double> certificate_parameters(const CreasePattern& p, const FoldFam
     const int c = f.component[e];
     if (c < 0) continue;
     biggest[c] = std::max(biggest[c], std::abs(f.multiplier[e]));
-    const double s = letter_sign(p.assignments[e]);
+    const double s = assigned_fold_sign(p.assignments[e]);
     if (signs && sign[c] == 0.0 && s != 0.0) sign[c] = s * (f.multiplier[e] > 0 ? 1.0 : -1.0);
   }
   std::vector<double> t(f.num_components, 0.0);
@@ -267,20 +261,9 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
         candidates[k].push_back({mode, 0});
         continue;
       }
-      int sigma = 0;
-      bool ok = true;
-      for (int i = 0; i < 4 && ok; ++i) {
-        const double s = letter_sign(pattern.assignments[model.creases[k][i]]);
-        if (s == 0.0) continue;
-        if (w[i] == 0.0) {
-          ok = false;  // an assigned crease would stay flat
-          break;
-        }
-        const int need = sign_of(s * w[i]);
-        if (sigma == 0) sigma = need;
-        ok = sigma == need;
-      }
-      if (ok) candidates[k].push_back({mode, sigma});
+      std::array<Assignment, 4> letters;
+      for (int i = 0; i < 4; ++i) letters[i] = pattern.assignments[model.creases[k][i]];
+      if (const auto sigma = mode_sign_matching_letters(w, letters)) candidates[k].push_back({mode, *sigma});
     }
     if (!use_assignment) {
       // Modes in which every crease folds first.
@@ -357,8 +340,8 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
   int wrong_sign = -1;
   if (use_assignment)
     for (int e = 0; e < pattern.num_edges() && wrong_sign < 0; ++e)
-      if (topology.edge_is_hinge[e] && letter_sign(pattern.assignments[e]) * out.certificate_angles[e] <= 0.0 &&
-          letter_sign(pattern.assignments[e]) != 0.0)
+      if (topology.edge_is_hinge[e] && has_fold_sign(pattern.assignments[e]) &&
+          assigned_fold_sign(pattern.assignments[e]) * out.certificate_angles[e] <= 0.0)
         wrong_sign = e;
   if (wrong_sign >= 0 || !(out.certificate_mismatch <= opt.mismatch_tolerance)) {
     out.verdict = Verdict::kUndecided;
@@ -387,6 +370,30 @@ const char* to_string(Obstruction::Kind kind) {
     case Obstruction::Kind::kSign: return "sign";
   }
   return "?";
+}
+
+std::optional<int> mode_sign_matching_letters(const std::array<double, 4>& w, const std::array<Assignment, 4>& letters) {
+  int sigma = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int s = assigned_fold_sign(letters[i]);
+    if (s == 0) continue;
+    if (w[i] == 0.0) return std::nullopt;  // an assigned crease would stay flat
+    const int need = sign_of(s * w[i]);
+    if (sigma == 0) sigma = need;
+    if (sigma != need) return std::nullopt;
+  }
+  return sigma;
+}
+
+std::vector<FlatFoldMode> modes_matching_letters(const CreasePattern& pattern, const Fan& fan) {
+  std::vector<FlatFoldMode> modes;
+  if (fan.edges.size() != 4 || fan.sectors.size() != 4) return modes;
+  const std::array<double, 4> sectors{fan.sectors[0], fan.sectors[1], fan.sectors[2], fan.sectors[3]};
+  std::array<Assignment, 4> letters;
+  for (int i = 0; i < 4; ++i) letters[i] = pattern.assignments[fan.edges[i]];
+  for (FlatFoldMode mode : {FlatFoldMode::kEqual13, FlatFoldMode::kEqual02})
+    if (mode_sign_matching_letters(flat_fold_multipliers(sectors, mode).direction, letters)) modes.push_back(mode);
+  return modes;
 }
 
 const char* to_string(Verdict v) {

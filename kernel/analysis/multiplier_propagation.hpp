@@ -116,6 +116,16 @@ struct ModeCheck {
 ModeCheck check_modes(const MultiplierModel& model, const std::vector<FlatFoldMode>& modes,
                       double gain_tolerance = 1e-9);
 
+// The global sign sigma with which a vertex mode of multipliers w (one per crease, CCW)
+// folds every M/V crease its letter's way: tan(rho_i/2) = sigma * w_i * tau, tau > 0. Returns
+// 0 when no crease has a letter (either sign), nullopt when no sign does (an M/V crease with
+// w_i = 0 would stay flat, or the letters disagree). The one letter test of the model.
+std::optional<int> mode_sign_matching_letters(const std::array<double, 4>& w, const std::array<Assignment, 4>& letters);
+
+// The modes of a flat-foldable degree-4 vertex (its closed fan of four creases) that fold
+// every M/V crease its letter's way, kEqual13 first.
+std::vector<FlatFoldMode> modes_matching_letters(const CreasePattern& pattern, const Fan& fan);
+
 struct VerdictOptions {
   double flat_tolerance = 1e-9;      // radians, Kawasaki test of applicability
   double gain_tolerance = 1e-9;      // relative loop-gain defect taken as 1

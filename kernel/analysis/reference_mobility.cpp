@@ -5,29 +5,32 @@
 #include <numbers>
 #include <cmath>
 
-#include "kernel/analysis/facet_interference.hpp"
+#include "kernel/geometry/facet_interference.hpp"
+#include "kernel/analysis/path_watch.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/continuation.hpp"
+#include "kernel/solve/fold_limit_end.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
 namespace {
 
-// Checks one accepted point of a branch; returns true when the branch must stop there.
+// Checks one accepted point of a branch (PathWatch, path_watch.hpp); returns true when the
+// branch must stop there.
 class BranchWatch {
  public:
   BranchWatch(const CreasePattern& p, const Topology& t, const ClosureSystem& sys, const Eigen::VectorXd& reference,
-              const ReferenceMobilityOptions& o, MobilityBranch& b)
-      : p_(p), t_(t), sys_(sys), reference_(reference), o_(o), b_(b), previous_(reference),
-        previous_x_(sys.unknowns_from_edges(reference)) {
-    for (int e = 0; e < p.num_edges() && b.signs_match_assignment; ++e)
-      if (sys.unknown_of_edge(e) >= 0 && assigned_fold_sign(p.assignments[e]) * reference[e] < 0) {
-        b.signs_match_assignment = false;  // the given state itself folds e against its letter
-        b.first_wrong_crease = e;
-      }
+              const ReferenceMobilityOptions& o, TracedBranch& b)
+      : p_(p), t_(t), sys_(sys), reference_(reference), o_(o), b_(b),
+        watch_(p, b.driving_edge, watch_options(o), movable(p, sys)), previous_x_(sys.unknowns_from_edges(reference)) {
+    const PathWatch::Segment seg = watch_.observe(reference);  // the given state seeds the signs
+    if (seg.first_against_letter >= 0) {
+      b.signs_match_assignment = false;  // the given state itself folds a crease against its letter
+      b.first_wrong_crease = seg.first_against_letter;
+    }
   }
 
   Eigen::VectorXd angles(const Eigen::VectorXd& x) const {
@@ -41,70 +44,62 @@ class BranchWatch {
     const Eigen::VectorXd rho = angles(x);
     b_.path.push_back(rho);
     b_.max_fold = std::max(b_.max_fold, rho.cwiseAbs().maxCoeff());
+    const PathWatch::Segment seg = watch_.observe(rho);
     // A point past a fold limit is not physical: the branch ends at the limit itself, solved
     // with the first crease to cross it held at +-pi (the state where the layers close).
-    int crossing = -1;
-    double first = 2.0;
-    for (int e = 0; e < p_.num_edges(); ++e)
-      if (sys_.unknown_of_edge(e) >= 0 && std::abs(rho[e]) >= o_.fold_limit) {
-        const double s = (o_.fold_limit - std::abs(previous_[e])) / (std::abs(rho[e]) - std::abs(previous_[e]));
-        if (s < first) {
-          first = s;
-          crossing = e;
-        }
+    if (seg.fold_limit_crease >= 0) {
+      const auto end = solve_fold_limit_end(sys_, previous_x_, x, seg.fold_limit_crease, seg.fold_limit_fraction,
+                                            o_.tolerances.residual, kUnboundedDistance);
+      if (end) {
+        b_.max_residual = std::max(b_.max_residual, end->residual);
+        b_.path.back() = angles(end->x);
+      } else {
+        b_.path.back() = angles(previous_x_);  // not solved: the previous point ends the branch
+        b_.stop_message = "end at 180 deg not solved; the previous point ends the branch";
       }
-    if (crossing >= 0) {
-      b_.path.back() = end_at_limit(x, crossing, std::clamp(first, 0.0, 1.0));
       b_.max_fold = std::max(b_.max_fold, b_.path.back().cwiseAbs().maxCoeff());
-      return finish("fold limit", crossing);
+      return finish(StopReason::kFoldLimit, seg.fold_limit_crease);
     }
-    for (int e = 0; e < p_.num_edges(); ++e) {
-      if (sys_.unknown_of_edge(e) < 0) continue;
-      if (previous_[e] * rho[e] < 0) {
-        const double s = previous_[e] / (previous_[e] - rho[e]);
-        const double drive = previous_[b_.driving_edge] + s * (rho[b_.driving_edge] - previous_[b_.driving_edge]);
-        const bool against = assigned_fold_sign(p_.assignments[e]) * rho[e] < 0;
-        b_.sign_switches.push_back({e, drive, against});
-        if (against && b_.signs_match_assignment) {
-          b_.signs_match_assignment = false;
-          b_.first_wrong_crease = e;
-        }
-        if (against && o_.use_assignment) return finish("sign switch", e);
+    for (const SignSwitch& s : seg.switches) {
+      b_.sign_switches.push_back(s);
+      if (s.against_assignment && b_.signs_match_assignment) {
+        b_.signs_match_assignment = false;
+        b_.first_wrong_crease = s.crease;
       }
+      if (s.against_assignment && o_.use_assignment) return finish(StopReason::kSignSwitch, s.crease);
     }
-    previous_ = rho;
     previous_x_ = x;
     const bool letters_ok = !o_.use_assignment || b_.signs_match_assignment;
     const FoldedGeometry g = place_faces(p_, t_, rho, reference_);
     const FacetInterference fi = find_facet_interference(p_, g.vertices);
     if (!fi.face_pairs.empty()) {
-      b_.interfering_faces = fi.face_pairs.front();
-      return finish("global interference", -1);
+      b_.global_interference_faces = fi.face_pairs.front();
+      b_.global_interference_index = static_cast<int>(b_.path.size()) - 1;
+      b_.global_interference_driving = rho[b_.driving_edge];
+      return finish(StopReason::kGlobalInterference, -1);
     }
     if (letters_ok) b_.valid_points = static_cast<int>(b_.path.size());
     if (b_.path.size() > 10 && (rho - reference_).cwiseAbs().maxCoeff() < 0.5 * o_.max_step)
-      return finish("closed loop", -1);
+      return finish(StopReason::kClosedLoop, -1);
     return false;
   }
 
  private:
-  // The point where crease e reaches +-pi between the previous point and x (fraction s of
-  // the way, linearly): Newton projection with e held at +-pi. If it does not converge, the
-  // previous point ends the branch.
-  Eigen::VectorXd end_at_limit(const Eigen::VectorXd& x, int e, double s) {
-    Eigen::VectorXd start = previous_x_ + s * (x - previous_x_);
-    const int k = sys_.unknown_of_edge(e);
-    start[k] = std::copysign(std::numbers::pi, x[k]);
-    NewtonOptions no;
-    no.tolerance = o_.tolerance;
-    no.held_unknowns = {k};
-    const NewtonResult nr = newton_project(sys_, start, no);
-    if (!nr.converged) return previous_;
-    b_.max_residual = std::max(b_.max_residual, nr.residual_history.back());
-    return angles(nr.x);
+  // The end solve may move far from the interpolated start (a coarse step near the limit).
+  static constexpr double kUnboundedDistance = 1e300;
+
+  static PathWatchOptions watch_options(const ReferenceMobilityOptions& o) {
+    PathWatchOptions w;
+    w.tolerances = o.tolerances;
+    return w;
+  }
+  static std::vector<bool> movable(const CreasePattern& p, const ClosureSystem& sys) {
+    std::vector<bool> m(p.num_edges());
+    for (int e = 0; e < p.num_edges(); ++e) m[e] = sys.unknown_of_edge(e) >= 0;
+    return m;
   }
 
-  bool finish(const char* why, int crease) {
+  bool finish(StopReason why, int crease) {
     b_.stopped_by = why;
     b_.stop_crease = crease;
     return true;
@@ -114,9 +109,9 @@ class BranchWatch {
   const ClosureSystem& sys_;
   const Eigen::VectorXd& reference_;
   const ReferenceMobilityOptions& o_;
-  MobilityBranch& b_;
-  Eigen::VectorXd previous_;    // per-edge angles of the last accepted point
-  Eigen::VectorXd previous_x_;  // its unknowns
+  TracedBranch& b_;
+  PathWatch watch_;
+  Eigen::VectorXd previous_x_;  // unknowns of the last accepted point
 };
 
 }  // namespace
@@ -134,7 +129,9 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
   Eigen::SparseMatrix<double> J;
   sys.evaluate(x0, r, J);
   m.reference_residual = r.size() ? r.lpNorm<Eigen::Infinity>() : 0.0;
-  const RankResult rank = jacobian_rank(J);
+  RankOptions ro;
+  ro.relative_tolerance = o.tolerances.rank_cut;
+  const RankResult rank = jacobian_rank(J, ro);
   m.dof = rank.dof;
   m.sigma_kept = rank.sigma_kept;
   m.sigma_dropped = rank.sigma_dropped;
@@ -147,26 +144,31 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
     int drive = 0;
     null_edges.cwiseAbs().maxCoeff(&drive);
     for (int sense : {1, -1}) {
-      MobilityBranch b;
+      TracedBranch b;
       b.id = static_cast<int>(m.branches.size());
       b.sense = sense;
       b.driving_edge = drive;
       b.driving_begin = reference[drive];
+      b.dof_at_departure = m.dof;
+      b.valid_points = 0;
       BranchWatch watch(p, t, sys, reference, o, b);
       if (m.dof == 1) {
         ContinuationOptions copt;
         copt.max_step = o.max_step;
         copt.initial_step = std::min(copt.initial_step, o.max_step);
         copt.max_points = o.max_points;
-        copt.tolerance = o.tolerance;
+        copt.tolerance = o.tolerances.residual;
         const Eigen::VectorXd direction = sense * rank.null_space.col(0);
         const ContinuationResult cr = continue_one_dof(
             sys, x0, direction, [&](const Eigen::VectorXd& x) { return watch.stop_at(x); }, copt);
         for (const ContinuationPoint& pt : cr.points) b.max_residual = std::max(b.max_residual, pt.residual);
-        if (b.stopped_by.empty()) b.stopped_by = cr.reason;
+        if (b.stopped_by == StopReason::kNone) {
+          b.stopped_by = cr.stopped ? StopReason::kMaxPoints : StopReason::kContinuationFailed;
+          b.stop_message = cr.reason;
+        }
       } else {
         NewtonOptions no;
-        no.tolerance = o.tolerance;
+        no.tolerance = o.tolerances.residual;
         no.held_unknowns = {sys.unknown_of_edge(drive)};
         Eigen::VectorXd x = x0;
         double h = o.driven_step;
@@ -177,7 +179,7 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
           if (!nr.converged) {
             h *= 0.5;
             if (h < 1e-6) {
-              b.stopped_by = "projection failed";
+              b.stopped_by = StopReason::kCorrectorFailed;
               break;
             }
             continue;
@@ -186,14 +188,14 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
           b.max_residual = std::max(b.max_residual, nr.residual_history.back());
           if (watch.stop_at(x)) break;
         }
-        if (b.stopped_by.empty()) b.stopped_by = "max points";
+        if (b.stopped_by == StopReason::kNone) b.stopped_by = StopReason::kMaxPoints;
       }
       if (!b.path.empty()) b.driving_end = b.path.back()[drive];
       m.max_residual = std::max(m.max_residual, b.max_residual);
       m.branches.push_back(std::move(b));
     }
     bool moved = false;
-    for (const MobilityBranch& b : m.branches)
+    for (const TracedBranch& b : m.branches)
       for (int k = 0; k < b.valid_points; ++k)
         if (std::abs(b.path[k][drive] - reference[drive]) >= o.min_motion) moved = true;
     if (moved) {

@@ -11,8 +11,9 @@
 //     DOF > 1: projected driving, both ways: the crease with the largest component in the
 //     first null vector is stepped by `driven_step` and the rest Newton-projected
 //     (minimum-norm) from the previous point.
-//     A branch stops at a fold limit (some crease reaching +-fold_limit: local interference;
-//     the end point is then solved exactly with the first crease to cross held at +-pi),
+//     The branch is watched by PathWatch (path_watch.hpp). It stops at a fold limit (some
+//     crease reaching +-fold_limit(): local interference; the end point is then solved with
+//     the first crease to cross held at +-pi, solve_fold_limit_end),
 //     at a sign switch against a letter (when use_assignment), when faces cross (global
 //     interference, facet_interference.hpp, checked at every point), when the path returns
 //     to x0 (a closed loop of motion), when continuation fails, or at max_points.
@@ -27,7 +28,9 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/analysis/general_verdict.hpp"  // SignSwitch
+#include "kernel/analysis/multiplier_propagation.hpp"  // Verdict
+#include "kernel/analysis/tolerances.hpp"
+#include "kernel/analysis/traced_branch.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -35,31 +38,13 @@ namespace rigidfold {
 
 struct ReferenceMobilityOptions {
   bool use_assignment = true;
-  double fold_limit = 3.14159265358979 - 1e-6;  // |rho| at which a branch ends (local interference)
+  // fold_limit() ends a branch (the end is then solved at +-pi), residual (corrector stop),
+  // sign_threshold, rank_cut (DOF at the given state).
+  Tolerances tolerances = kDefaultTolerances;
   double min_motion = 0.1;                       // radians of driving crease for a "yes"
   double max_step = 0.05;                        // continuation arclength step cap (radians)
   double driven_step = 0.02;                     // DOF > 1: driving crease step (radians)
   int max_points = 4000;                         // per branch
-  double tolerance = 1e-12;                      // corrector residual (radians)
-};
-
-struct MobilityBranch {
-  int id = 0;
-  int sense = 1;                          // +1 / -1: the two ways out of the reference
-  int driving_edge = -1;                  // crease whose fold angle parameterises the branch
-  double driving_begin = 0, driving_end = 0;  // radians
-  double max_fold = 0;                    // largest |rho| reached (radians)
-  std::string stopped_by;                 // "fold limit", "sign switch", "global interference", "closed loop", "max points", or the continuation's reason
-  int stop_crease = -1;
-  double max_residual = 0;
-  bool signs_match_assignment = true;
-  int first_wrong_crease = -1;
-  std::vector<SignSwitch> sign_switches;
-  std::pair<int, int> interfering_faces{-1, -1};
-  std::vector<Eigen::VectorXd> path;      // per-edge fold angles at every accepted point
-  // Leading points of `path` that are a valid motion: every letter kept (when used) from the
-  // given state on, no face crossing, no fold past the limit.
-  int valid_points = 0;
 };
 
 struct ReferenceMobility {
@@ -68,7 +53,9 @@ struct ReferenceMobility {
   int holes = 0;                   // SE(3) hole closures used
   double reference_residual = 0;   // ||r(x0)||_inf
   double sigma_kept = 0, sigma_dropped = 0;  // singular values either side of the rank cut
-  std::vector<MobilityBranch> branches;
+  // sense +-1; valid_points: leading points that are a valid motion (every letter kept,
+  // when used, from the given state on; no face crossing; no fold past the limit).
+  std::vector<TracedBranch> branches;
   double max_residual = 0;
   std::string reason;
   double seconds = 0;

@@ -13,18 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "kernel/pattern/assignment.hpp"
+
 namespace rigidfold {
-
-// FOLD edges_assignment letters.
-enum class Assignment { Boundary, Mountain, Valley, Flat, Unassigned, Cut, Join };
-
-char assignment_letter(Assignment a);
-// Returns nullopt for a letter FOLD does not define.
-std::optional<Assignment> assignment_from_letter(char c);
-// A crease that may fold (M, V, U). F and J are rigid joins, B and C are not joins.
-bool is_foldable_crease(Assignment a);
-// Sign a crease's letter asks of its fold angle: -1 M, +1 V, 0 for any other letter.
-int assigned_fold_sign(Assignment a);
 
 struct CreasePattern {
   std::vector<Eigen::Vector3d> vertices;      // reference coordinates (z = 0 for 2D input)

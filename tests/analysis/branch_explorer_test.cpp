@@ -40,7 +40,7 @@ CreasePattern modified(double twist, generators::SquareTwistModifiedType type) {
 }
 
 // Sign of every crease at the first traced point of a branch matches `p`'s letters, except `skip`.
-bool departs_with_letters(const CreasePattern& p, const BranchTrace& b, std::initializer_list<int> skip) {
+bool departs_with_letters(const CreasePattern& p, const TracedBranch& b, std::initializer_list<int> skip) {
   if (b.path.size() < 2) return false;
   for (int e = 0; e < p.num_edges(); ++e) {
     if (std::find(skip.begin(), skip.end(), e) != skip.end()) continue;
@@ -57,19 +57,19 @@ TEST(BranchExplorerSeed001, Type2MBifurcationLocatedAndBothBranchesLeft) {
   const CreasePattern p = modified(kPi / 6, generators::SquareTwistModifiedType::Type2M);
   const BranchExploration x = explore_branches(p, build_topology(p));
   ASSERT_TRUE(x.applicable);
-  ASSERT_EQ(x.points[0].kind, "flat");
+  ASSERT_EQ(x.points[0].kind, PointKind::kFlat);
   EXPECT_EQ(x.points[0].kernel_dimension, 5);  // first order says little at flat
   std::cout << "  type 2M: " << x.points.size() << " points, " << x.branches.size() << " branches, " << x.seconds
             << " s; flat tangent cone " << x.points[0].tangent_lines << " lines\n";
   int certified = 0;
-  for (const BranchTrace& b : x.branches) {
+  for (const TracedBranch& b : x.branches) {
     if (b.from_point != 0 || !b.signs_match_assignment || b.path.size() < 2) continue;
     ++certified;
     EXPECT_LE(b.max_residual, 1e-12);
-    ASSERT_EQ(b.stopped_by, "bifurcation");
+    ASSERT_EQ(b.stopped_by, StopReason::kBifurcation);
     ASSERT_GE(b.to_point, 0);
     const BranchPoint& bp = x.points[b.to_point];
-    EXPECT_EQ(bp.kind, "bifurcation");
+    EXPECT_EQ(bp.kind, PointKind::kBifurcation);
     std::cout << "  bifurcation: phi_1^b = " << phi1b(bp.angles) / kPi << " pi (seed 0.59 pi), uncertainty "
               << bp.parameter_uncertainty << " rad, sigma_(n-1)/sigma_max " << bp.sigma_second_smallest / bp.sigma_max
               << ", residual " << bp.residual << ", kernel " << bp.kernel_dimension << ", lines " << bp.tangent_lines
@@ -82,7 +82,7 @@ TEST(BranchExplorerSeed001, Type2MBifurcationLocatedAndBothBranchesLeft) {
     EXPECT_EQ(bp.tangent_lines, 2);
     // Branches leave the bifurcation along the other line, both ways, and are traced.
     int leaving = 0;
-    for (const BranchTrace& c : x.branches)
+    for (const TracedBranch& c : x.branches)
       if (c.from_point == b.to_point && c.path.size() > 5) {
         ++leaving;
         EXPECT_LE(c.max_residual, 1e-12);
@@ -98,21 +98,21 @@ TEST(BranchExplorerSeed001, Type1MPathsEachBreakOneLetterPair) {
   const CreasePattern p = modified(kPi / 6, generators::SquareTwistModifiedType::Type1M);
   const BranchExploration x = explore_branches(p, build_topology(p));
   ASSERT_TRUE(x.applicable);
-  for (const BranchTrace& b : x.branches) {
+  for (const TracedBranch& b : x.branches) {
     EXPECT_FALSE(b.from_point == 0 && b.signs_match_assignment) << b.id;
     if (b.dof_at_departure > 1) std::cout << "  type 1M: branch " << b.id << " leaves flat into a " << b.dof_at_departure << "-DOF family (not traced)\n";
   }
   int path1 = 0, path2 = 0;
-  for (const BranchTrace& b : x.branches) {
+  for (const TracedBranch& b : x.branches) {
     if (b.from_point != 0) continue;
     if (departs_with_letters(p, b, {12})) {
       ++path1;
       // b5 or d5 reaches 180 deg: local facet interference at III_1.
-      EXPECT_EQ(b.stopped_by, "fold limit");
+      EXPECT_EQ(b.stopped_by, StopReason::kFoldLimit);
       EXPECT_TRUE(b.stop_crease == 6 || b.stop_crease == 10) << b.stop_crease;
       ASSERT_GE(b.to_point, 0);
       const BranchPoint& bp = x.points[b.to_point];
-      EXPECT_EQ(bp.kind, "interference");
+      EXPECT_EQ(bp.kind, PointKind::kInterference);
       std::cout << "  type 1M path 1: crease " << b.stop_crease << " at 180 deg at phi_1^b = "
                 << phi1b(bp.angles) / kPi << " pi (seed III_1: 0.41 pi); diagonal "
                 << b.path[1][12] << " rad (mountain, letter V)\n";
@@ -159,9 +159,9 @@ double path1_interference(double twist) {
   BranchExplorerOptions o;
   o.max_branches = 40;
   const BranchExploration x = explore_branches(p, build_topology(p), o);
-  for (const BranchTrace& b : x.branches) {
+  for (const TracedBranch& b : x.branches) {
     if (b.from_point != 0 || !departs_with_letters(p, b, {12})) continue;
-    if (b.to_point >= 0 && x.points[b.to_point].kind == "interference") return phi1b(x.points[b.to_point].angles);
+    if (b.to_point >= 0 && x.points[b.to_point].kind == PointKind::kInterference) return phi1b(x.points[b.to_point].angles);
     return -1.0;
   }
   ADD_FAILURE() << "path 1 not found at twist " << twist;

@@ -31,10 +31,10 @@ double rad(double deg) { return deg * kPi / 180; }
 double deg(double r) { return r * 180 / kPi; }
 
 void print(const std::string& name, const GeneralVerdict& g) {
-  std::cout << "[general] " << name << ": " << to_string(g.verdict) << " dof " << g.dof << " points "
-            << g.path.size() << " max_fold " << deg(g.max_fold) << " deg max_res " << g.max_residual
-            << " mismatch " << g.certificate_mismatch << " stop '" << g.stopped_by << "' crease "
-            << g.stop_crease << " switches " << g.sign_switches.size() << " singular "
+  std::cout << "[general] " << name << ": " << to_string(g.verdict) << " dof " << g.trace.dof_at_departure << " points "
+            << g.trace.path.size() << " max_fold " << deg(g.trace.max_fold) << " deg max_res " << g.trace.max_residual
+            << " mismatch " << g.certificate_mismatch << " stop '" << g.trace.stop_text() << "' crease "
+            << g.trace.stop_crease << " switches " << g.trace.sign_switches.size() << " singular "
             << g.singular_points.size() << " least_res " << g.least_residual << " starts "
             << g.starts_converged << "/" << g.starts_tried << " wrong-sign " << g.starts_wrong_sign << " "
             << g.seconds << " s\n";
@@ -56,16 +56,16 @@ void expect_models_agree(const CreasePattern& p, const std::string& name) {
     EXPECT_FALSE(g.is_proof) << name;
     return;
   }
-  EXPECT_EQ(g.dof, mv.dof) << name;
-  EXPECT_GE(g.max_fold, rad(30)) << name;
-  EXPECT_LE(g.max_residual, 1e-12) << name;
+  EXPECT_EQ(g.trace.dof_at_departure, mv.dof) << name;
+  EXPECT_GE(g.trace.max_fold, rad(30)) << name;
+  EXPECT_LE(g.trace.max_residual, 1e-12) << name;
   EXPECT_LE(g.certificate_mismatch, 1e-10) << name;
   ASSERT_TRUE(mv.family.has_value());
   double worst = 0;
   int compared = 0;
-  for (const Eigen::VectorXd& rho : g.path) {
+  for (const Eigen::VectorXd& rho : g.trace.path) {
     if (rho.cwiseAbs().maxCoeff() > 2.8) continue;
-    const double tau = mv.family->parameter_for(g.driving_crease, rho[g.driving_crease]);
+    const double tau = mv.family->parameter_for(g.trace.driving_edge, rho[g.trace.driving_edge]);
     worst = std::max(worst, (mv.family->angles(tau) - rho).cwiseAbs().maxCoeff());
     ++compared;
   }
@@ -114,8 +114,8 @@ TEST(GeneralVerdictSingleVertex, GenericDegree5And6) {
     const GeneralVerdict g = general_verdict(p, t);
     print("single vertex degree " + std::to_string(degree), g);
     EXPECT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
-    EXPECT_EQ(g.dof, degree - 3);
-    EXPECT_LE(g.max_residual, 1e-12);
+    EXPECT_EQ(g.trace.dof_at_departure, degree - 3);
+    EXPECT_LE(g.trace.max_residual, 1e-12);
     EXPECT_LE(g.certificate_mismatch, 1e-10);
   }
 }
@@ -128,7 +128,7 @@ TEST(GeneralVerdictWaterbomb, BaseFolds) {
   const GeneralVerdict g = general_verdict(p, t);
   print("waterbomb base n=4", g);
   EXPECT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
-  EXPECT_EQ(g.dof, 5);
+  EXPECT_EQ(g.trace.dof_at_departure, 5);
   EXPECT_LE(g.certificate_mismatch, 1e-10);
 }
 
@@ -149,10 +149,10 @@ TEST(GeneralVerdictSeed001, ModifiedSquareTwistTypes1MAnd2M) {
     const GeneralVerdict g = general_verdict(p, t);
     print("seed 001 type2m", g);
     ASSERT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
-    EXPECT_EQ(g.dof, 1);
-    EXPECT_LE(g.max_residual, 1e-12);
+    EXPECT_EQ(g.trace.dof_at_departure, 1);
+    EXPECT_LE(g.trace.max_residual, 1e-12);
     EXPECT_LE(g.certificate_mismatch, 1e-10);
-    EXPECT_EQ(g.stopped_by, "singular point");
+    EXPECT_EQ(g.trace.stopped_by, StopReason::kSingularPoint);
     ASSERT_EQ(g.singular_points.size(), 1u);
     const double ab = std::abs(g.singular_points[0].angles[0]) / kPi;
     std::cout << "    singular point at |rho_AB| = " << ab << " pi (seed 001: 0.41 pi)\n";
@@ -172,8 +172,8 @@ TEST(GeneralVerdictSeed001, ModifiedSquareTwistTypes1MAnd2M) {
     const GeneralVerdict u = general_verdict(p, t, o);
     print("seed 001 type1m (letters ignored)", u);
     EXPECT_EQ(u.verdict, Verdict::kRigidlyFoldable) << u.reason;
-    EXPECT_EQ(u.dof, 1);
-    for (const SignSwitch& s : u.sign_switches)
+    EXPECT_EQ(u.trace.dof_at_departure, 1);
+    for (const SignSwitch& s : u.trace.sign_switches)
       std::cout << "    sign switch: crease " << s.crease << " at rho_AB " << deg(s.driving_value) << " deg\n";
   }
 }
@@ -251,8 +251,8 @@ TEST(GeneralVerdictSeed003, RotationCaseEq2_34FoldsWithOneDof) {
   const GeneralVerdict g = general_verdict(p, t);
   print("seed 003 eq. (2-34)", g);
   EXPECT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
-  EXPECT_EQ(g.dof, 1);
-  EXPECT_LE(g.max_residual, 1e-12);
+  EXPECT_EQ(g.trace.dof_at_departure, 1);
+  EXPECT_LE(g.trace.max_residual, 1e-12);
   EXPECT_LE(g.certificate_mismatch, 1e-10);
 }
 

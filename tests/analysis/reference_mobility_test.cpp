@@ -31,17 +31,17 @@ TEST(ReferenceMobility, MiuraTubeFoldsBothWaysToItsFoldLimits) {
   EXPECT_LE(m.reference_residual, 1e-13);
   EXPECT_LE(m.max_residual, 1e-11);
   ASSERT_EQ(m.branches.size(), 2u);
-  for (const MobilityBranch& b : m.branches) {
-    EXPECT_EQ(b.stopped_by, "fold limit");
+  for (const TracedBranch& b : m.branches) {
+    EXPECT_EQ(b.stopped_by, StopReason::kFoldLimit);
     EXPECT_TRUE(b.signs_match_assignment);
-    EXPECT_EQ(b.interfering_faces.first, -1);
+    EXPECT_EQ(b.global_interference_faces.first, -1);
     std::printf("[ReferenceMobility] Miura tube branch %d: crease %d %.2f -> %.2f deg, %zu points, stopped by %s\n", b.id,
-                b.driving_edge, b.driving_begin * 180 / kPi, b.driving_end * 180 / kPi, b.path.size(), b.stopped_by.c_str());
+                b.driving_edge, b.driving_begin * 180 / kPi, b.driving_end * 180 / kPi, b.path.size(), b.stop_text().c_str());
   }
   // One way flattens the tube (the strips unfold: straight creases back to 0 while the bonds
   // close to 180 deg); the other flat-folds it (straight creases to 180 deg).
   double min_end = kPi, max_end = 0;
-  for (const MobilityBranch& b : m.branches) {
+  for (const TracedBranch& b : m.branches) {
     min_end = std::min(min_end, std::abs(b.path.back()[generators::miura_tube_a_straight(tp, 0, 1)]));
     max_end = std::max(max_end, std::abs(b.path.back()[generators::miura_tube_a_straight(tp, 0, 1)]));
   }
@@ -68,10 +68,10 @@ TEST(ReferenceMobility, PrismTubesAreNMinusThreeBarLoops) {
     EXPECT_EQ(m.verdict, Verdict::kRigidlyFoldable) << m.reason;
     EXPECT_LE(m.max_residual, 1e-11);
     ASSERT_EQ(m.branches.size(), 2u);
-    for (const MobilityBranch& b : m.branches) {
+    for (const TracedBranch& b : m.branches) {
       std::printf("[ReferenceMobility] pentagon branch %d: %zu points, stopped by %s (crease %d)\n", b.id, b.path.size(),
-                  b.stopped_by.c_str(), b.stop_crease);
-      EXPECT_GE(b.path.size(), 5u) << b.stopped_by;
+                  b.stop_text().c_str(), b.stop_crease);
+      EXPECT_GE(b.path.size(), 5u) << b.stop_text();
     }
   }
 }
@@ -86,7 +86,7 @@ TEST(ReferenceMobility, GivenStateAgainstItsLettersIsNotACertificate) {
   const ReferenceMobility with_letters = reference_mobility(p, t);
   EXPECT_EQ(with_letters.dof, 1);
   EXPECT_NE(with_letters.verdict, Verdict::kRigidlyFoldable);
-  for (const MobilityBranch& b : with_letters.branches) {
+  for (const TracedBranch& b : with_letters.branches) {
     EXPECT_FALSE(b.signs_match_assignment);
     EXPECT_EQ(b.first_wrong_crease, e);
   }

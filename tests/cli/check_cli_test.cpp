@@ -1,5 +1,6 @@
 // `rigidfold check --json` on generated patterns: the documented keys, verdicts that match
 // seed 001 (square twist Types 3/4 fold, 1/2 do not), exit 2 on bad input.
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -38,7 +39,7 @@ TEST(CheckCli, MiuraIsFoldableWithOneDofAndSmallResidual) {
   ASSERT_EQ(j["branches"].size(), 1u);
   EXPECT_EQ(j["branches"][0]["signs_match_assignment"], true);
   EXPECT_LE(j["max_residual"].get<double>(), 1e-12);
-  EXPECT_GT(j["branches"][0]["range_deg"][1].get<double>(), 170.0);
+  EXPECT_GT(std::fabs(j["branches"][0]["range_deg"][1].get<double>()), 170.0);  // the driving crease may be a mountain
   EXPECT_TRUE(j["obstruction"].is_null());
 }
 

@@ -86,7 +86,7 @@ TEST(TraceCli, MiuraFollowsTheClosedForm) {
   EXPECT_EQ(j["traced"], true);
   EXPECT_EQ(j["branch"], 0);
   EXPECT_LE(j["max_residual"].get<double>(), 1e-12);
-  const int drive = j["drive_edge"];
+  const int drive = j["driving_crease"];
   const auto kinds = generators::miura_crease_kinds(m);
   // The largest multiplier is a zig-zag crease's (the straight ones lag).
   EXPECT_EQ(kinds[drive], generators::MiuraCrease::ZigZag);
@@ -159,7 +159,7 @@ TEST(TraceCli, MiuraGeneralSolverAgreesWithMultipliers) {
   write_fold(p, in);
   const auto jm = run_json(in + " --steps 10 --to 120 --csv " + a);
   ASSERT_FALSE(jm.is_null());
-  const int drive = jm["drive_edge"];
+  const int drive = jm["driving_crease"];
   const auto jg = run_json(in + " --steps 10 --to 120 --general --drive " + std::to_string(drive) + " --csv " + b);
   ASSERT_FALSE(jg.is_null());
   EXPECT_EQ(jg["model"], "general loop-closure solver");
@@ -308,7 +308,7 @@ TEST(TraceCli, FullyFoldedMarksInterference) {
   EXPECT_TRUE(interference);
   EXPECT_LE(j["max_residual"].get<double>(), 1e-12);
   // Driven against its letter, every crease of the family folds against its letter.
-  const int drive = j["drive_edge"];
+  const int drive = j["driving_crease"];
   const auto k = run_json(in + " --steps 5 --drive " + std::to_string(drive) + " --to " +
                           (j["branches"][0]["drive_assignment"] == "M" ? "90" : "-90"));
   ASSERT_FALSE(k.is_null());
@@ -352,7 +352,7 @@ TEST(TraceCli, MiuraTubeBothWaysFromItsGivenState) {
     if (c.header[i].size() > 5 && c.header[i][0] == 'e' && std::isdigit(static_cast<unsigned char>(c.header[i][1])))
       last_max = std::max(last_max, std::abs(std::stod(c.rows.back()[i])));
   EXPECT_NEAR(last_max, 180.0, 1e-9);
-  const int drive = j["branches"][0]["drive_edge"].get<int>();
+  const int drive = j["branches"][0]["driving_crease"].get<int>();
   const int col = c.column("e" + std::to_string(drive) + "_deg");
   ASSERT_GE(col, 0);
   // The first row is the given (folded) state, not the flat sheet.

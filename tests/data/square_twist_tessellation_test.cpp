@@ -280,15 +280,15 @@ TEST(GeneratorSquareTwistTessellation, GeneralSolverAgreesWithMultiplierModel2x2
       ASSERT_EQ(mv.verdict, Verdict::kRigidlyFoldable) << where;
       const GeneralVerdict g = general_verdict(p, topo);
       ASSERT_EQ(g.verdict, Verdict::kRigidlyFoldable) << where << ": " << g.reason;
-      EXPECT_EQ(g.dof, mv.dof) << where;
-      EXPECT_EQ(g.dof, 1) << where;
-      EXPECT_LE(g.max_residual, 1e-12) << where;
+      EXPECT_EQ(g.trace.dof_at_departure, mv.dof) << where;
+      EXPECT_EQ(g.trace.dof_at_departure, 1) << where;
+      EXPECT_LE(g.trace.max_residual, 1e-12) << where;
       EXPECT_LE(g.certificate_mismatch, 1e-10) << where;
       double worst = 0;
       int compared = 0;
-      for (const Eigen::VectorXd& rho : g.path) {
+      for (const Eigen::VectorXd& rho : g.trace.path) {
         if (rho.cwiseAbs().maxCoeff() > 2.8) continue;  // tan(rho/2) blows up near the flat-folded end
-        const double tau = mv.family->parameter_for(g.driving_crease, rho[g.driving_crease]);
+        const double tau = mv.family->parameter_for(g.trace.driving_edge, rho[g.trace.driving_edge]);
         worst = std::max(worst, (mv.family->angles(tau) - rho).cwiseAbs().maxCoeff());
         ++compared;
       }

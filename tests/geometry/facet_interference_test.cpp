@@ -1,4 +1,4 @@
-// Global facet interference (kernel/analysis/facet_interference.hpp): FCL broad phase, strict
+// Global facet interference (kernel/geometry/facet_interference.hpp): FCL broad phase, strict
 // piercing test. Hand-made face pairs (crossing, touching at a vertex, coplanar layers), the
 // folded Miura (layers, never crossing) and a strip whose outer panels cross.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "data/generators/miura.hpp"
-#include "kernel/analysis/facet_interference.hpp"
+#include "kernel/geometry/facet_interference.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/pattern/topology.hpp"

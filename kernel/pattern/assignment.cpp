@@ -1,4 +1,4 @@
-#include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/assignment.hpp"
 
 namespace rigidfold {
 

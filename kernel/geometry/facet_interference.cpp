@@ -1,4 +1,4 @@
-#include "kernel/analysis/facet_interference.hpp"
+#include "kernel/geometry/facet_interference.hpp"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>

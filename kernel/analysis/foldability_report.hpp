@@ -1,0 +1,135 @@
+#pragma once
+// check_foldability: the front door of the kernel. One call from a pattern to its
+// rigid-foldability report; `rigidfold check`, `rigidfold report`, `rigidfold trace` and
+// the bindings all go through it, and no caller decides a verdict of its own.
+//
+// Model choice (DESIGN.md, "Model only what a scene needs"), in this order:
+//   1. a sheet with holes (tubes): given-state mobility with one SE(3) closure per hole
+//      (reference_mobility.hpp): DOF 0 is a proof of rigidity, a traced branch a yes;
+//   2. every interior vertex a flat-foldable degree-4 vertex: multiplier propagation
+//      (multiplier_propagation.hpp), exact both ways, O(creases); the fold family is sampled
+//      from flat to the fold limit, one branch per family component;
+//   3. otherwise (or force_general): the general loop-closure verdict (general_verdict.hpp),
+//      and, where the pattern has at most BranchExplorerOptions::max_unknowns free creases,
+//      the branch explorer (branch_explorer.hpp). The explorer's branches are evidence the
+//      search may lack: a branch leaving the flat state with DOF 1, every letter kept (or
+//      letters ignored), no face crossing before it reaches certificate_fold, and residual at
+//      most tolerances.certificate_residual all along, is a certified folding motion and
+//      makes the verdict "foldable" even when the search found none.
+//
+// Verdict classes (DESIGN.md, "Verdict classes and tolerance"):
+//   kFoldable                 a certified path (traced branch or exact family);
+//   kFoldableWithinTolerance  the closure gap is below what the input's rounding explains
+//                             (reserved for the input-precision check; not produced yet);
+//   kNotFoldableProof         loop gain != 1, a pin, no mode matching the letters, DOF 0
+//                             at a regular given state, no foldable crease;
+//   kNotFoldableEvidence      the general search found no folded point near flat: numerical
+//                             evidence within the search, not a proof (is_proof = false);
+//   kUndecided                the models available did not decide.
+//
+// Units: radians, per-edge fold angles with the FOLD sign (valley > 0, mountain < 0);
+// residuals ||r||_inf in radians; mismatches relative to the pattern's size.
+// Throws: nothing for a valid pattern (a solver that cannot handle a pattern gives
+// kUndecided with the reason); std::bad_alloc.
+// Cost: O(creases) on the multiplier path; the general path is a few sparse Newton
+// projections and one continuation, the explorer dense SVDs (<= 400 free creases).
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernel/analysis/branch_explorer.hpp"
+#include "kernel/analysis/general_verdict.hpp"
+#include "kernel/analysis/multiplier_propagation.hpp"
+#include "kernel/analysis/tolerances.hpp"
+#include "kernel/analysis/traced_branch.hpp"
+#include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
+
+namespace rigidfold {
+
+enum class FoldabilityClass { kFoldable, kFoldableWithinTolerance, kNotFoldableProof, kNotFoldableEvidence, kUndecided };
+const char* to_string(FoldabilityClass c);
+
+enum class FoldabilityModel { kMultiplierPropagation, kGeneralLoopClosure, kGivenStateHoleClosure, kNone };
+const char* to_string(FoldabilityModel m);
+
+struct FoldabilityOptions {
+  bool use_assignment = true;   // false: every crease may fold either way (letters ignored)
+  bool force_general = false;   // skip multiplier propagation (cross-checks)
+  bool explore_branches = true; // run the branch explorer where it applies (general model)
+  Tolerances tolerances = kDefaultTolerances;
+  int family_samples = 64;      // multiplier model: points sampled along each family component
+};
+
+// Why a pattern does not fold (or the search's evidence that it does not).
+struct FoldabilityObstruction {
+  std::string kind;     // "loop gain", "pin", "vertex assignment", "sign" (multiplier model),
+                        // "no folded point found near flat" (general), "first-order rigid" (given state)
+  std::string message;
+  std::optional<Obstruction> exact;                   // the multiplier model's obstruction
+  double least_residual = -1.0;                       // general / given state (radians)
+  std::vector<std::pair<int, double>> worst_vertices; // general: (vertex, ||r_v||), largest first
+  int crease_against_assignment = -1;                 // general: a start converged against this letter
+  int starts_tried = -1, starts_converged_against_assignment = -1;  // general search
+};
+
+struct FoldabilityReport {
+  FoldabilityClass verdict = FoldabilityClass::kUndecided;
+  bool is_proof = false;            // a certificate or a proof (false: evidence, or undecided)
+  FoldabilityModel model = FoldabilityModel::kNone;
+  std::string model_name;           // the solver's own name ("multiplier-propagation", ...)
+  std::string model_choice;         // why this model
+  std::string reason;               // one line for the user
+  bool assignment_used = true;
+  Tolerances tolerances;            // the values used
+  int dof = 0;                      // 0 unless foldable
+  std::string dof_basis;            // how the DOF was counted (rank cut, or family components)
+  std::vector<TracedBranch> branches;
+  // Points where branches meet. Multiplier model: the flat state. General model with the
+  // explorer: every point it found (flat, located bifurcations, fold-limit ends).
+  std::vector<BranchPoint> points;
+  // General model without the explorer: bordered-determinant sign changes, not refined.
+  std::vector<SingularPoint> unrefined_singular_points;
+  bool branches_explored = false;   // the branch explorer ran
+  std::string exploration_note;     // why it did not, when it did not
+  double exploration_seconds = 0.0;
+  std::vector<SignSwitch> sign_switches;  // general model: along the search's certificate trace
+  std::optional<FoldabilityObstruction> obstruction;  // when not foldable
+  double max_residual = 0.0;        // largest closure residual along the reported branches (rad)
+  std::optional<double> certificate_mismatch;     // face placement of the certificate (relative)
+  std::optional<double> certificate_max_fold;     // multiplier: largest |rho| at the certificate (rad)
+  std::optional<double> max_loop_gain_defect;     // multiplier: over the independent cycles
+  // Given-state model (sheets with holes).
+  int holes_closed = 0;
+  double reference_residual = 0.0;
+  double sigma_kept = 0.0, sigma_dropped = 0.0;   // either side of the rank cut
+  std::string interference_checked; // which interference tests the branches went through
+  double seconds = 0.0;
+
+  bool foldable() const {
+    return verdict == FoldabilityClass::kFoldable || verdict == FoldabilityClass::kFoldableWithinTolerance;
+  }
+  bool not_foldable() const {
+    return verdict == FoldabilityClass::kNotFoldableProof || verdict == FoldabilityClass::kNotFoldableEvidence;
+  }
+};
+
+FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology& topology,
+                                    const FoldabilityOptions& options = {});
+
+// The model choice of check_foldability (steps 1-3 above), for callers that run the model
+// themselves (trace_motion): the one place that picks a model. On the multiplier model it
+// carries that model's verdict (computed to decide applicability; exact and cheap).
+struct ModelChoice {
+  FoldabilityModel model = FoldabilityModel::kNone;
+  std::string why;
+  int holes = 0;
+  std::optional<FoldabilityVerdict> multiplier;  // kMultiplierPropagation only
+};
+ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology, const FoldabilityOptions& options);
+
+// Number of holes over the sheet's components (topology.components[*].holes).
+int count_holes(const Topology& topology);
+
+}  // namespace rigidfold

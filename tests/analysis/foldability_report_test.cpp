@@ -1,0 +1,109 @@
+// check_foldability (kernel/analysis/foldability_report.hpp), the kernel's front door, linked
+// directly: its report and the CLI's `check --json` agree on every bundled and corpus file
+// (same verdict, class, proof flag, DOF, model, branches and residual), and the report's own
+// invariants hold (a yes has branches within the certificate bound, a no an obstruction, an
+// evidence-only no is never a proof).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "kernel/analysis/foldability_report.hpp"
+#include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "tests/support/run_command.hpp"
+
+namespace rigidfold {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> pattern_files(bool corpus) {
+  std::vector<std::string> files;
+  const fs::path dir = corpus ? fs::path(RIGIDFOLD_CORPUS_DIR) : fs::path(RIGIDFOLD_SOURCE_DIR) / "data/bundled";
+  if (!fs::is_directory(dir)) return files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().extension() == ".fold") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+void expect_report_invariants(const FoldabilityReport& r, const std::string& where) {
+  if (r.foldable()) {
+    EXPECT_TRUE(r.is_proof) << where;
+    EXPECT_GE(r.dof, 1) << where;
+    EXPECT_FALSE(r.branches.empty()) << where;
+    EXPECT_FALSE(r.obstruction.has_value()) << where;
+    EXPECT_LE(r.max_residual, r.tolerances.certificate_residual) << where;
+  }
+  if (r.not_foldable()) {
+    EXPECT_TRUE(r.obstruction.has_value()) << where;
+    EXPECT_EQ(r.dof, 0) << where;
+    EXPECT_EQ(r.is_proof, r.verdict == FoldabilityClass::kNotFoldableProof) << where;
+  }
+  if (r.verdict == FoldabilityClass::kUndecided) EXPECT_FALSE(r.is_proof) << where;
+  EXPECT_NE(r.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": not produced yet";
+}
+
+void expect_cli_agrees(const std::string& file, bool use_assignment) {
+  const std::string where = file + (use_assignment ? "" : " (letters ignored)");
+  const CreasePattern p = read_fold(file);
+  const Topology t = build_topology(p, file);
+  FoldabilityOptions o;
+  o.use_assignment = use_assignment;
+  const FoldabilityReport r = check_foldability(p, t, o);
+  expect_report_invariants(r, where);
+
+  const test::CommandResult c =
+      test::run_command(test::cli() + " check '" + file + "' --json" + (use_assignment ? "" : " --ignore-assignment"));
+  ASSERT_EQ(c.status, 0) << where << ": " << c.err;
+  const auto j = nlohmann::json::parse(c.out);
+  EXPECT_EQ(j["verdict_class"], to_string(r.verdict)) << where;
+  if (r.foldable()) EXPECT_EQ(j["rigidly_foldable"], true) << where;
+  if (r.not_foldable()) EXPECT_EQ(j["rigidly_foldable"], false) << where;
+  if (r.verdict == FoldabilityClass::kUndecided) EXPECT_TRUE(j["rigidly_foldable"].is_null()) << where;
+  EXPECT_EQ(j["is_proof"], r.is_proof) << where;
+  EXPECT_EQ(j["dof"], r.dof) << where;
+  EXPECT_EQ(j["model"], r.model_name) << where;
+  EXPECT_EQ(j["model_choice"], r.model_choice) << where;
+  EXPECT_EQ(j["obstruction"].is_null(), !r.obstruction.has_value()) << where;
+  ASSERT_EQ(j["branches"].size(), r.branches.size()) << where;
+  for (std::size_t i = 0; i < r.branches.size(); ++i) {
+    EXPECT_EQ(j["branches"][i]["stopped_by"], r.branches[i].stop_text()) << where << " branch " << i;
+    EXPECT_EQ(j["branches"][i]["driving_crease"], r.branches[i].driving_edge) << where << " branch " << i;
+  }
+  // The solvers are deterministic (seeded starts); only BLAS summation order may differ.
+  EXPECT_NEAR(j["max_residual"].get<double>(), r.max_residual, 1e-13) << where;
+  EXPECT_EQ(j["tolerances"]["residual_rad"].get<double>(), r.tolerances.residual) << where;
+}
+
+class BundledFile : public ::testing::TestWithParam<std::string> {};
+class CorpusFile : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BundledFile, KernelReportAndCliAgreeWithAndWithoutLetters) {
+  expect_cli_agrees(GetParam(), true);
+  expect_cli_agrees(GetParam(), false);
+}
+
+// Letters as given only: ignoring them doubles the time of the large box-pleat files.
+TEST_P(CorpusFile, KernelReportAndCliAgree) { expect_cli_agrees(GetParam(), true); }
+
+std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string s = fs::path(info.param).stem().string();
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s + "_" + std::to_string(info.index);
+}
+
+INSTANTIATE_TEST_SUITE_P(Foldability, BundledFile, ::testing::ValuesIn(pattern_files(false)), test_name);
+INSTANTIATE_TEST_SUITE_P(Foldability, CorpusFile, ::testing::ValuesIn(pattern_files(true)), test_name);
+
+TEST(Foldability, EveryBundledAndCorpusFileIsListed) {
+  EXPECT_GE(pattern_files(false).size(), 10u);
+  EXPECT_GE(pattern_files(true).size(), 15u);
+}
+
+}  // namespace
+}  // namespace rigidfold
