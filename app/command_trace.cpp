@@ -43,6 +43,7 @@
 #include "kernel/analysis/trace_motion.hpp"
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/math/angle_units.hpp"
+#include "kernel/math/number_text.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -51,18 +52,6 @@ namespace rigidfold::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string deg_text(double radians) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", to_degrees(radians));
-  return buf;
-}
-
-std::string num(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
 
 // ---- outputs ----------------------------------------------------------------------------
 
@@ -87,11 +76,11 @@ std::string csv_text(const MotionBranch& b, int num_edges) {
       if (!ev.empty()) ev += ';';
       ev += std::string(to_string(x.kind)) + ":e" + std::to_string(x.edge);
     }
-    s += std::to_string(k + 1) + "," + num(to_degrees(st.drive)) + "," + num(st.residual) + "," +
-         num(st.folded.max_mismatch) + "," + ev;
+    s += std::to_string(k + 1) + "," + round_trip_text(to_degrees(st.drive)) + "," + round_trip_text(st.residual) + "," +
+         round_trip_text(st.folded.max_mismatch) + "," + ev;
     for (int e = 0; e < num_edges; ++e) {
       s += ',';
-      s += num(to_degrees(st.rho[e]));
+      s += round_trip_text(to_degrees(st.rho[e]));
     }
     s += "\n";
   }
@@ -106,7 +95,7 @@ std::string frames_text(const MotionBranch& b, const CreasePattern& p) {
   for (std::size_t k = 0; k < b.steps.size(); ++k) {
     const MotionStep& st = b.steps[k];
     const std::string title = "rigidfold trace: branch " + std::to_string(b.id) + ", step " + std::to_string(k + 1) +
-                              ", crease " + std::to_string(b.drive) + " at " + deg_text(st.drive) + " deg";
+                              ", crease " + std::to_string(b.drive) + " at " + degrees_text(st.drive) + " deg";
     CreasePattern one = with_folded_frame(bare, st.folded, st.rho, title);
     Json frame = one.extra["file_frames"].back();
     frame["rigidfold:max_residual_rad"] = st.residual;
@@ -165,17 +154,17 @@ void print_text(const std::string& file, const MotionTrace& m, const std::vector
   std::cout << file << ": model " << m.model_name << "\n";
   if (!m.note.empty()) std::cout << "  " << m.note << "\n";
   for (const MotionBranch& b : m.branches) {
-    std::cout << "  branch " << b.id << ": drive crease " << b.drive << " to " << deg_text(b.to) << " deg";
+    std::cout << "  branch " << b.id << ": drive crease " << b.drive << " to " << degrees_text(b.to) << " deg";
     if (!b.traced) {
       std::cout << ": not traced\n    " << b.message << "\n";
       continue;
     }
-    std::cout << ", " << b.steps.size() << " steps to " << deg_text(b.reached) << " deg (" << b.stopped_by << ")\n";
+    std::cout << ", " << b.steps.size() << " steps to " << degrees_text(b.reached) << " deg (" << b.stopped_by << ")\n";
     std::cout << "    max closure residual " << b.max_residual << " rad, max face-placement mismatch " << b.max_mismatch
               << "\n";
     for (const MotionEvent& e : b.events)
       std::cout << "    step " << e.step << ": " << to_string(e.kind) << " at crease " << e.edge << " (drive "
-                << deg_text(e.drive) << " deg, crease " << deg_text(e.angle) << " deg)\n";
+                << degrees_text(e.drive) << " deg, crease " << degrees_text(e.angle) << " deg)\n";
     if (!b.message.empty()) std::cout << "    " << b.message << "\n";
   }
   for (const auto& f : files) std::cout << "  wrote " << f.first << "\n";

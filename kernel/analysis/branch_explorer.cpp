@@ -1,4 +1,5 @@
 #include "kernel/analysis/branch_explorer.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -20,7 +21,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct Departure {
   int point;

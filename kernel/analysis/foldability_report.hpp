@@ -1,7 +1,7 @@
 #pragma once
 // check_foldability: the front door of the kernel. One call from a pattern to its
-// rigid-foldability report; `rigidfold check`, `rigidfold report`, `rigidfold trace` and
-// the bindings all go through it, and no caller decides a verdict of its own.
+// rigid-foldability report; `rigidfold check`, `rigidfold report` and `rigidfold trace` (via
+// choose_model) go through it, and no caller decides a verdict of its own.
 //
 // Model choice (DESIGN.md, "Model only what a scene needs"), in this order:
 //   1. a sheet with holes (tubes): given-state mobility with one SE(3) closure per hole

@@ -13,6 +13,7 @@
 #include "kernel/closure/vertex_residuals.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/math/angle_units.hpp"
+#include "kernel/math/number_text.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/solve/continuation.hpp"
 #include "kernel/solve/fold_limit_end.hpp"
@@ -21,18 +22,6 @@
 
 namespace rigidfold {
 namespace {
-
-std::string deg_text(double radians) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", to_degrees(radians));
-  return buf;
-}
-
-std::string num(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
 
 double max_abs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
@@ -189,7 +178,7 @@ class GeneralTracer {
     if (!start.converged) {
       const double best = *std::min_element(start.residual_history.begin(), start.residual_history.end());
       b_.message = "general solver: no folded state found near the reference with crease " + std::to_string(b_.drive) +
-                   " held at " + deg_text(x_ref[kd_] + delta) + " deg (smallest residual " + num(best) + " rad after " +
+                   " held at " + degrees_text(x_ref[kd_] + delta) + " deg (smallest residual " + round_trip_text(best) + " rad after " +
                    std::to_string(start.iterations) + " Newton steps); the pattern may not fold from this state (0 DOF)";
       return std::nullopt;
     }
@@ -207,7 +196,7 @@ class GeneralTracer {
     ro.compute_null_space = false;
     b_.dof = jacobian_rank(J, ro).dof;
     if (b_.dof == 1) return true;
-    b_.message = "general solver: DOF at the start (crease " + std::to_string(b_.drive) + " at " + deg_text(x[kd_]) +
+    b_.message = "general solver: DOF at the start (crease " + std::to_string(b_.drive) + " at " + degrees_text(x[kd_]) +
                  " deg) is " + std::to_string(b_.dof) + ", not 1; 1-DOF continuation does not apply, nothing traced";
     return false;
   }
@@ -255,7 +244,7 @@ class GeneralTracer {
       }
       if (d <= ds_.back()) {
         clamp_at(ds_.back(), StopReason::kTurningPoint,
-                 "the driving crease turns back at " + deg_text(dir_ * ds_.back()) +
+                 "the driving crease turns back at " + degrees_text(dir_ * ds_.back()) +
                      " deg (a fold point of the drive; choose another --drive); clamped");
         ended = true;
         break;
@@ -265,7 +254,7 @@ class GeneralTracer {
     }
     if (!ended && ds_.back() < limit_)
       clamp_at(ds_.back(), StopReason::kContinuationFailed,
-               "continuation stopped (" + path.reason + ") at driving angle " + deg_text(dir_ * ds_.back()) +
+               "continuation stopped (" + path.reason + ") at driving angle " + degrees_text(dir_ * ds_.back()) +
                    " deg; clamped");
     b_.reached = dir_ * limit_;
     return true;
@@ -280,7 +269,7 @@ class GeneralTracer {
       const double d_end = dir_ * end->x[kd_];
       if (d_end < limit_) {
         clamp_at(d_end, StopReason::kFoldLimit,
-                 "a crease reaches 180 deg at driving angle " + deg_text(dir_ * d_end) +
+                 "a crease reaches 180 deg at driving angle " + degrees_text(dir_ * d_end) +
                      " deg (local interference limit)" + (std::fabs(b_.to) - d_end > 1e-9 ? "; clamped" : ""));
         xs_.push_back(end->x);
         ds_.push_back(d_end);
@@ -290,7 +279,7 @@ class GeneralTracer {
     }
     clamp_at(ds_.back(), StopReason::kFoldLimit,
              "crease " + std::to_string(seg.fold_limit_crease) + " passes the fold limit after driving angle " +
-                 deg_text(dir_ * ds_.back()) +
+                 degrees_text(dir_ * ds_.back()) +
                  " deg, and the point where it is at 180 deg was not solved (a singular end, e.g. the fully folded "
                  "state); clamped at the last point before it");
   }
@@ -337,8 +326,8 @@ class GeneralTracer {
     }
     b_.traced = true;
     if (failures > 0)
-      b_.message = std::to_string(failures) + " step(s) did not converge to " + num(nopt_.tolerance) +
-                   " (worst residual " + num(worst_fail) + " rad); their residual is reported as reached";
+      b_.message = std::to_string(failures) + " step(s) did not converge to " + round_trip_text(nopt_.tolerance) +
+                   " (worst residual " + round_trip_text(worst_fail) + " rad); their residual is reported as reached";
   }
 
   const CreasePattern& p_;

@@ -1,7 +1,7 @@
 #pragma once
 // trace_motion: the folding motion of a pattern, sampled at steps, with every fold angle,
-// the closure residual, the face placement and events per step. `rigidfold trace` and the
-// bindings call it; the model is the one check_foldability picks (choose_model).
+// the closure residual, the face placement and events per step. `rigidfold trace` calls it;
+// the model is the one check_foldability picks (choose_model).
 //
 // Models:
 //   - multiplier propagation, foldable: the fold family tan(rho_e/2) = m_e * t_c, one

@@ -1,4 +1,5 @@
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +18,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 // Keys this module models; every other key goes to CreasePattern::extra.
 bool is_modelled_key(const std::string& key) {
@@ -174,7 +173,7 @@ void read_fold_angles(const Json& doc, CreasePattern& p, const std::string& sour
     const std::string path = "edges_foldAngle[" + std::to_string(i) + "]";
     const double deg = finite_number(fa[i], source, path);
     if (std::fabs(deg) > 180.0) throw InputError(place(source, path), "fold angle " + std::to_string(deg) + " deg is outside [-180, 180]");
-    p.fold_angles[i] = deg * kDegToRad;
+    p.fold_angles[i] = deg * kRadiansPerDegree;
   }
 }
 
@@ -266,7 +265,7 @@ nlohmann::ordered_json fold_to_json(const CreasePattern& p) {
   if (any_angle || p.fold_angles_in_file) {
     Json angles = Json::array();
     for (const auto& a : p.fold_angles) {
-      if (a) angles.push_back(*a * kRadToDeg);
+      if (a) angles.push_back(*a * kDegreesPerRadian);
       else angles.push_back(nullptr);
     }
     doc["edges_foldAngle"] = std::move(angles);

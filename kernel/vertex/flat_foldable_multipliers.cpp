@@ -1,4 +1,5 @@
 #include "kernel/vertex/flat_foldable_multipliers.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <cmath>
 #include <limits>
@@ -11,7 +12,6 @@ namespace rigidfold {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Below this a direction entry is rounding noise of sin/cos at an exact zero
 // (e.g. cos(pi/2) = 6e-17): that crease stays flat in the mode.
 constexpr double kZeroDirection = 1e-15;

@@ -1,4 +1,5 @@
 #include "kernel/vertex/miura_vertex.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -9,7 +10,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 void check_alpha(double alpha, const char* name) {
   if (!std::isfinite(alpha) || !(alpha > 0.0) || !(alpha < kPi / 2))

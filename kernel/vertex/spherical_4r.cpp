@@ -1,4 +1,5 @@
 #include "kernel/vertex/spherical_4r.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@ namespace rigidfold {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double wrap_angle(double x) { return std::remainder(x, 2.0 * kPi); }
 

@@ -26,12 +26,12 @@
 
 #include "data/generators/square_twist.hpp"
 #include "kernel/analysis/branch_explorer.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 CreasePattern modified(double twist, generators::SquareTwistModifiedType type) {
   generators::SquareTwistParams sp;

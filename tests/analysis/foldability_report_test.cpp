@@ -43,14 +43,25 @@ void expect_report_invariants(const FoldabilityReport& r, const std::string& whe
     EXPECT_EQ(r.dof, 0) << where;
     EXPECT_EQ(r.is_proof, r.verdict == FoldabilityClass::kNotFoldableProof) << where;
   }
-  if (r.verdict == FoldabilityClass::kUndecided) EXPECT_FALSE(r.is_proof) << where;
+  if (r.verdict == FoldabilityClass::kUndecided) {
+    EXPECT_FALSE(r.is_proof) << where;
+  }
   EXPECT_NE(r.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": not produced yet";
 }
+
+// The sanitizer build (Debug, ASan) runs every test ~30x slower; there the five large
+// box-pleat files (thousands of vertices, ~10 s each in Release) are left to the Release run.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
 
 void expect_cli_agrees(const std::string& file, bool use_assignment) {
   const std::string where = file + (use_assignment ? "" : " (letters ignored)");
   const CreasePattern p = read_fold(file);
   const Topology t = build_topology(p, file);
+  if (kSanitized && p.num_vertices() > 1000) GTEST_SKIP() << where << ": large; checked by the Release run";
   FoldabilityOptions o;
   o.use_assignment = use_assignment;
   const FoldabilityReport r = check_foldability(p, t, o);
@@ -61,9 +72,9 @@ void expect_cli_agrees(const std::string& file, bool use_assignment) {
   ASSERT_EQ(c.status, 0) << where << ": " << c.err;
   const auto j = nlohmann::json::parse(c.out);
   EXPECT_EQ(j["verdict_class"], to_string(r.verdict)) << where;
-  if (r.foldable()) EXPECT_EQ(j["rigidly_foldable"], true) << where;
-  if (r.not_foldable()) EXPECT_EQ(j["rigidly_foldable"], false) << where;
-  if (r.verdict == FoldabilityClass::kUndecided) EXPECT_TRUE(j["rigidly_foldable"].is_null()) << where;
+  const nlohmann::json expected_foldable =
+      r.foldable() ? nlohmann::json(true) : r.not_foldable() ? nlohmann::json(false) : nlohmann::json(nullptr);
+  EXPECT_EQ(j["rigidly_foldable"], expected_foldable) << where;
   EXPECT_EQ(j["is_proof"], r.is_proof) << where;
   EXPECT_EQ(j["dof"], r.dof) << where;
   EXPECT_EQ(j["model"], r.model_name) << where;

@@ -19,6 +19,7 @@
 #include "data/generators/square_twist.hpp"
 #include "data/generators/waterbomb.hpp"
 #include "kernel/analysis/general_verdict.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 #include "tests/closure/closure_test_utils.hpp"
@@ -26,7 +27,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 double rad(double deg) { return deg * kPi / 180; }
 double deg(double r) { return r * 180 / kPi; }
 

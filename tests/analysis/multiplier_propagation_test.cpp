@@ -22,12 +22,12 @@
 #include "data/generators/miura.hpp"
 #include "data/generators/square_twist.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/geometry/face_placement.hpp"
 
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 double rad(double deg) { return deg * kPi / 180; }
 std::string sci(double x) {
   std::ostringstream out;

@@ -10,12 +10,12 @@
 #include "data/generators/miura_tube.hpp"
 #include "data/generators/tube.hpp"
 #include "kernel/analysis/reference_mobility.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(ReferenceMobility, MiuraTubeFoldsBothWaysToItsFoldLimits) {
   generators::MiuraTubeParams tp;

@@ -14,12 +14,12 @@
 #include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 class TempDir {
  public:
@@ -106,16 +106,16 @@ TEST(TraceCli, MiuraFollowsTheClosedForm) {
   double worst_angle = 0, worst_residual = 0;
   for (const auto& row : c.rows) {
     ASSERT_EQ(row.size(), c.header.size());
-    const double drive_rad = std::stod(row[1]) / kDeg;
+    const double drive_rad = std::stod(row[1]) / kDegreesPerRadian;
     worst_residual = std::max(worst_residual, std::stod(row[2]));
-    EXPECT_NEAR(std::stod(row[5 + drive]) / kDeg, drive_rad, 1e-15);
+    EXPECT_NEAR(std::stod(row[5 + drive]) / kDegreesPerRadian, drive_rad, 1e-15);
     // Straight-crease fold from the zig-zag one: tan(|rs|/2) = cos(alpha) tan(|rz|/2);
     // positive when the creases fold as assigned.
     const double rs = 2 * std::atan(std::cos(m.alpha) * std::tan(std::fabs(drive_rad) / 2)) *
                       (drive_rad * drive_sign > 0 ? 1.0 : -1.0);
     const auto expected = generators::miura_fold_angles(p, m, rs);
     for (int e = 0; e < p.num_edges(); ++e)
-      worst_angle = std::max(worst_angle, std::fabs(std::stod(row[5 + e]) / kDeg - expected[e].value_or(0.0)));
+      worst_angle = std::max(worst_angle, std::fabs(std::stod(row[5 + e]) / kDegreesPerRadian - expected[e].value_or(0.0)));
   }
   EXPECT_LE(worst_residual, 1e-12);
   EXPECT_LE(worst_angle, 1e-10);
@@ -172,7 +172,7 @@ TEST(TraceCli, MiuraGeneralSolverAgreesWithMultipliers) {
   double worst = 0;
   for (std::size_t k = 0; k < ca.rows.size(); ++k)
     for (int e = 0; e < p.num_edges(); ++e)
-      worst = std::max(worst, std::fabs(std::stod(ca.rows[k][5 + e]) - std::stod(cb.rows[k][5 + e])) / kDeg);
+      worst = std::max(worst, std::fabs(std::stod(ca.rows[k][5 + e]) - std::stod(cb.rows[k][5 + e])) / kDegreesPerRadian);
   EXPECT_LE(worst, 1e-10);
   std::cout << "[measured] miura 3x4 general vs multiplier: max |delta rho| " << worst << " rad, general residual "
             << jg["max_residual"].get<double>() << " rad\n";
@@ -182,7 +182,7 @@ TEST(TraceCli, SquareTwistType3HasNoMvSwitch) {
   TempDir dir;
   for (double twist_deg : {20.0, 30.0, 60.0}) {
     generators::SquareTwistParams params;
-    params.twist = twist_deg / kDeg;
+    params.twist = twist_deg / kDegreesPerRadian;
     const std::string in = dir.file("twist.fold");
     write_fold(generators::square_twist(params, generators::SquareTwistType::Type3), in);
     const auto j = run_json(in + " --steps 40 --branch all");
@@ -229,7 +229,7 @@ TEST(TraceCli, SquareTwistModifiedUsesTheGeneralSolver) {
   for (const auto& row : c.rows)
     for (std::size_t i = 5; i < row.size(); ++i) largest = std::max(largest, std::fabs(std::stod(row[i])));
   EXPECT_LE(largest, 180.0);
-  EXPECT_GE(largest, 180.0 - 1e-9 * kDeg);
+  EXPECT_GE(largest, 180.0 - 1e-9 * kDegreesPerRadian);
   std::cout << "[measured] square twist 2M to 180: reached " << k["reached_deg"] << " deg (" << k["stopped_by"]
             << "), max residual " << k["max_residual"] << " rad\n";
 }

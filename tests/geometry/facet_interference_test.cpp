@@ -9,6 +9,7 @@
 
 #include "data/generators/miura.hpp"
 #include "kernel/geometry/facet_interference.hpp"
+#include "kernel/math/angle_units.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -16,7 +17,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Two triangles as separate faces (no shared vertex unless `share`).
 CreasePattern two_triangles(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b, bool share) {
