@@ -113,10 +113,10 @@ std::string markdown(const Json& report) {
   for (const auto& j : report["patterns"]) {
     md << "| " << j["name"].get<std::string>() << " | " << j["vertices"] << " | " << j["edges"] << " | " << j["faces"] << " | "
        << j["interior_vertices"] << " | " << j["kawasaki_ok"] << " | " << j["maekawa_ok"] << " | "
-       << j["check"]["verdict"].get<std::string>() << " | " << j["check"]["model"].get<std::string>() << " | " << j["check"]["dof"]
+       << j["check"]["verdict_class"].get<std::string>() << " | " << j["check"]["model"].get<std::string>() << " | " << j["check"]["dof"]
        << " | " << j["check"]["max_residual"].get<double>() << " | "
        << (j["check"]["obstruction"].is_null() ? std::string("-") : j["check"]["obstruction"]["message"].get<std::string>()) << " | "
-       << j["check_ignoring_assignment"]["verdict"].get<std::string>() << " | " << j["local_verdict"].get<std::string>() << " | "
+       << j["check_ignoring_assignment"]["verdict_class"].get<std::string>() << " | " << j["local_verdict"].get<std::string>() << " | "
        << (j.contains("relative_closure_mismatch") ? std::to_string(j["relative_closure_mismatch"].get<double>()) : "-") << " | "
        << j["seconds"].get<double>() << " |\n";
   }
@@ -148,7 +148,7 @@ void add_report_command(CLI::App& app) {
     for (const auto& f : files) {
       report["patterns"].push_back(analyse(f, *out));
       const auto& j = report["patterns"].back();
-      std::cout << j["name"].get<std::string>() << ": " << j["check"]["verdict"].get<std::string>() << " (" << j["check"]["model"].get<std::string>()
+      std::cout << j["name"].get<std::string>() << ": " << j["check"]["verdict_class"].get<std::string>() << " (" << j["check"]["model"].get<std::string>()
                 << "); " << j["local_verdict"].get<std::string>();
       if (j.contains("relative_closure_mismatch")) std::cout << "; folded state closure mismatch " << j["relative_closure_mismatch"].get<double>();
       std::cout << "\n";
