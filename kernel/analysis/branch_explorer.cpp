@@ -250,6 +250,9 @@ class Explorer {
     }
     used_[p].push_back((x - end->x).normalized());
     br.to_point = p;
+    br.path.back() = rho;  // the branch ends at the solved end, not at the point past the limit
+    br.max_fold = 0;
+    for (const Eigen::VectorXd& r : br.path) br.max_fold = std::max(br.max_fold, r.cwiseAbs().maxCoeff());
   }
 
   const CreasePattern& pattern_;

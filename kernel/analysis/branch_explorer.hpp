@@ -17,7 +17,8 @@
 //      (kFoldLimit: local facet interference if the others are not at 0 or +-pi, the fully
 //      folded state if they all are). The exact point where that crease is at +-pi is then
 //      solved for (solve_fold_limit_end) and added as a point of kind kInterference or
-//      kFullyFolded; departures are taken from a fully folded point too, but only those
+//      kFullyFolded (it replaces the branch's last point, which passed the limit); departures
+//      are taken from a fully folded point too, but only those
 //      that fold back (no crease beyond pi). Other stops: kKnownPoint, kContinuationFailed
 //      ("step too small", "not 1 DOF"), kMaxPoints, kDepartureFailed.
 //   4. Along each branch (PathWatch, path_watch.hpp, first segment skipped: it leaves a

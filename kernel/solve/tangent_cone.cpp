@@ -42,6 +42,18 @@ int tangent_rank(const std::vector<Eigen::MatrixXd>& H, const Eigen::VectorXd& c
   return r;
 }
 
+// A one-dimensional kernel with no second-order condition is itself the one tangent line.
+void add_single_kernel_line(TangentCone& cone) {
+  if (cone.kernel_dimension != 1) return;
+  TangentLine line;
+  Eigen::VectorXd d = cone.kernel.col(0);
+  Eigen::Index big;
+  d.cwiseAbs().maxCoeff(&big);
+  line.direction = (d[big] < 0 ? -d : d).normalized();
+  line.isolated = true;
+  cone.lines.push_back(line);
+}
+
 }  // namespace
 
 TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, const Eigen::VectorXd& x,
@@ -49,6 +61,15 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
   TangentCone cone;
   const Eigen::MatrixXd J = dense_jacobian(system, x);
   const int m = static_cast<int>(J.rows()), n = static_cast<int>(J.cols());
+  if (m == 0) {
+    // No closure rows (no interior vertex, no hole): every direction is free and there are
+    // no second-order conditions (Eigen's SVD must not see an empty matrix: it crashes).
+    cone.kernel_dimension = n;
+    cone.kernel = Eigen::MatrixXd::Identity(n, n);
+    cone.quadratics_vanish = true;
+    add_single_kernel_line(cone);
+    return cone;
+  }
   Eigen::BDCSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& sv = svd.singularValues();
   cone.sigma_max = sv.size() ? sv[0] : 0.0;
@@ -85,6 +106,7 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
   for (const auto& h : H) hmax = std::max(hmax, h.cwiseAbs().maxCoeff());
   if (hmax <= options.quadratic_tolerance * scale) {
     cone.quadratics_vanish = true;
+    add_single_kernel_line(cone);
     return cone;
   }
   const double accept = options.quadratic_tolerance * scale;

@@ -55,7 +55,8 @@ struct TangentCone {
   double sigma_max = 0.0, sigma_smallest_kept = 0.0, sigma_largest_dropped = 0.0;
   bool quadratics_vanish = false;     // every q_j is identically 0: the whole kernel is tangent
   Eigen::MatrixXd kernel;             // n x k, orthonormal
-  std::vector<TangentLine> lines;     // the branches' tangent lines (empty when quadratics_vanish)
+  std::vector<TangentLine> lines;     // the branches' tangent lines (when quadratics_vanish: the kernel
+                                      // itself if it is one line, else none: a continuum)
 };
 
 // Inputs: system, the topology it was built from, a point x on the manifold (radians).

@@ -111,6 +111,36 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 INSTANTIATE_TEST_SUITE_P(Foldability, BundledFile, ::testing::ValuesIn(pattern_files(false)), test_name);
 INSTANTIATE_TEST_SUITE_P(Foldability, CorpusFile, ::testing::ValuesIn(pattern_files(true)), test_name);
 
+// A sheet with no interior vertex (a unit square folded along one diagonal) has no closure
+// rows: the general model and the branch explorer used to crash on it (Eigen's SVD of an
+// empty matrix). It folds with 1 DOF, one crease from flat to the fold limit.
+TEST(Foldability, NoInteriorVertexFoldsAlongItsOneCrease) {
+  CreasePattern p;
+  p.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  p.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}};
+  p.assignments = {Assignment::Boundary, Assignment::Boundary, Assignment::Boundary, Assignment::Boundary,
+                   Assignment::Valley};
+  p.fold_angles.assign(5, std::nullopt);
+  p.faces = {{0, 1, 2}, {0, 2, 3}};
+  const Topology t = build_topology(p);
+  for (bool general : {false, true}) {
+    FoldabilityOptions o;
+    o.force_general = general;
+    const FoldabilityReport r = check_foldability(p, t, o);
+    expect_report_invariants(r, general ? "diagonal, general" : "diagonal");
+    EXPECT_EQ(r.verdict, FoldabilityClass::kFoldable);
+    EXPECT_EQ(r.dof, 1);
+  }
+  FoldabilityOptions o;
+  o.force_general = true;
+  const FoldabilityReport r = check_foldability(p, t, o);
+  ASSERT_TRUE(r.branches_explored);
+  bool reaches_limit = false;
+  for (const TracedBranch& b : r.branches)
+    reaches_limit |= b.stopped_by == StopReason::kFoldLimit && b.stop_crease == 4 && b.signs_match_assignment;
+  EXPECT_TRUE(reaches_limit);
+}
+
 TEST(Foldability, EveryBundledAndCorpusFileIsListed) {
   EXPECT_GE(pattern_files(false).size(), 10u);
   EXPECT_GE(pattern_files(true).size(), 15u);
