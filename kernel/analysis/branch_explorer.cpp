@@ -90,7 +90,7 @@ class Explorer {
 
   // Appends the point x to the branch: path, residual, letters, sign switches (watch) and
   // global facet interference.
-  void record(TracedBranch& br, PathWatch& watch, const Eigen::VectorXd& x) {
+  PathWatch::Segment record(TracedBranch& br, PathWatch& watch, const Eigen::VectorXd& x) {
     const Eigen::VectorXd rho = sys_.edges_from_unknowns(x);
     const double res = sys_.residual(x).lpNorm<Eigen::Infinity>();
     const PathWatch::Segment seg = watch.observe(rho);
@@ -111,6 +111,7 @@ class Explorer {
     br.path.push_back(rho);
     br.max_residual = std::max(br.max_residual, res);
     br.max_fold = std::max(br.max_fold, rho.cwiseAbs().maxCoeff());
+    return seg;
   }
 
   // Steps 1-3 for one departure: leave the point, trace, and end the branch.
@@ -136,19 +137,23 @@ class Explorer {
     Eigen::VectorXd prev_x = xs, before_prev_x = xs, along = dep.direction;
     monitor.step(dense_jacobian(sys_, leave.x), along);
     Halt halt = Halt::kNone;
-    double fold_fraction = 1.0;
+    double fold_fraction = 1.0;  // where on the last step the end solve starts
     auto accept = [&](const Eigen::VectorXd& x) {
       if ((x - prev_x).norm() > 0) along = (x - prev_x).normalized();
-      record(br, watch, x);
+      const PathWatch::Segment seg = record(br, watch, x);
       before_prev_x = prev_x;
       prev_x = x;
       if (br.path.size() > 2 && monitor.step(dense_jacobian(sys_, x), along).sign_changed) {
         halt = Halt::kBifurcation;
         return true;
       }
-      const Eigen::VectorXd& rho = br.path.back();
-      Eigen::Index e;
-      if (rho.cwiseAbs().maxCoeff(&e) >= opt_.tolerances.fold_limit()) {
+      if (seg.fold_limit_crease >= 0) {
+        // The crease held at +-pi for the end is the one furthest past the limit, solved from
+        // this point (fraction 1): near the fully folded state several creases pass the limit
+        // on one step, and the first to cross (PathWatch's crease) can lead the end solve to
+        // another branch (seed 001 Type 1M: the interference onset moved from 23.4 to 19.2 deg).
+        Eigen::Index e;
+        br.path.back().cwiseAbs().maxCoeff(&e);
         halt = Halt::kFoldLimit;
         br.stop_crease = static_cast<int>(e);
         fold_fraction = 1.0;
@@ -227,7 +232,20 @@ class Explorer {
                          double fraction) {
     br.stopped_by = StopReason::kFoldLimit;
     const auto end = solve_fold_limit_end(sys_, x_before, x, br.stop_crease, fraction, opt_.tolerances.residual);
-    if (!end) return;
+    if (!end) {
+      // Not solved: the point past the limit is no configuration of the sheet; the branch
+      // ends at the last point before it.
+      br.path.pop_back();
+      if (br.global_interference_index >= static_cast<int>(br.path.size())) {
+        br.global_interference_index = -1;  // found only at the dropped point
+        br.global_interference_faces = {-1, -1};
+      }
+      br.max_fold = 0;
+      for (const Eigen::VectorXd& r : br.path) br.max_fold = std::max(br.max_fold, r.cwiseAbs().maxCoeff());
+      br.stop_message = "the point where crease " + std::to_string(br.stop_crease) +
+                        " reaches 180 deg was not solved; the branch ends at the last point before it";
+      return;
+    }
     const Eigen::VectorXd rho = sys_.edges_from_unknowns(end->x);
     bool all_flat_folded = true;
     for (int e = 0; e < rho.size(); ++e) {
