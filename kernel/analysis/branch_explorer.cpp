@@ -95,10 +95,7 @@ class Explorer {
     const double res = sys_.residual(x).lpNorm<Eigen::Infinity>();
     const PathWatch::Segment seg = watch.observe(rho);
     br.sign_switches.insert(br.sign_switches.end(), seg.switches.begin(), seg.switches.end());
-    if (seg.first_against_letter >= 0 && br.signs_match_assignment) {
-      br.signs_match_assignment = false;
-      br.first_wrong_crease = seg.first_against_letter;
-    }
+    PathWatch::mark_letters(seg, br);
     if (opt_.check_global_interference && br.global_interference_index < 0) {
       const FoldedGeometry g = place_faces(pattern_, topology_, rho, reference_);
       const FacetInterference fi = find_facet_interference(pattern_, g.vertices);
@@ -110,7 +107,6 @@ class Explorer {
     }
     br.path.push_back(rho);
     br.max_residual = std::max(br.max_residual, res);
-    br.max_fold = std::max(br.max_fold, rho.cwiseAbs().maxCoeff());
     return seg;
   }
 
@@ -195,6 +191,7 @@ class Explorer {
       case Halt::kFoldLimit: end_at_fold_limit(br, before_prev_x, prev_x, fold_fraction); break;
     }
     if (br.dof_at_departure < 0) br.dof_at_departure = 1;
+    for (const Eigen::VectorXd& rho : br.path) br.max_fold = std::max(br.max_fold, rho.cwiseAbs().maxCoeff());
     br.driving_begin = br.path.front()[br.driving_edge];
     br.driving_end = br.path.back()[br.driving_edge];
     return br;
@@ -240,8 +237,6 @@ class Explorer {
         br.global_interference_index = -1;  // found only at the dropped point
         br.global_interference_faces = {-1, -1};
       }
-      br.max_fold = 0;
-      for (const Eigen::VectorXd& r : br.path) br.max_fold = std::max(br.max_fold, r.cwiseAbs().maxCoeff());
       br.stop_message = "the point where crease " + std::to_string(br.stop_crease) +
                         " reaches 180 deg was not solved; the branch ends at the last point before it";
       return;
@@ -269,8 +264,7 @@ class Explorer {
     used_[p].push_back((x - end->x).normalized());
     br.to_point = p;
     br.path.back() = rho;  // the branch ends at the solved end, not at the point past the limit
-    br.max_fold = 0;
-    for (const Eigen::VectorXd& r : br.path) br.max_fold = std::max(br.max_fold, r.cwiseAbs().maxCoeff());
+    br.max_residual = std::max(br.max_residual, end->residual);
   }
 
   const CreasePattern& pattern_;

@@ -5,8 +5,10 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "kernel/analysis/path_watch.hpp"
 #include "kernel/analysis/reference_mobility.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
+#include "kernel/math/number_text.hpp"
 
 namespace rigidfold {
 namespace {
@@ -44,8 +46,8 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
   r.reason = m.reason;
   r.dof = m.dof;
   r.dof_basis = "rank of the closure Jacobian (vertex and hole rows) at the given state, singular values below " +
-                std::to_string(o.tolerances.rank_cut) + " x largest dropped; kept " + std::to_string(m.sigma_kept) +
-                ", dropped " + std::to_string(m.sigma_dropped);
+                short_text(o.tolerances.rank_cut) + " x largest dropped; kept " + short_text(m.sigma_kept) +
+                ", dropped " + short_text(m.sigma_dropped);
   r.holes_closed = m.holes;
   r.reference_residual = m.reference_residual;
   r.sigma_kept = m.sigma_kept;
@@ -81,43 +83,33 @@ void multiplier_report(const CreasePattern& p, const Topology& t, const Foldabil
   }
   r.interference_checked = std::string(kLocalInterferenceOnly) + "; global face-face test not run on this model";
   if (v.verdict != Verdict::kRigidlyFoldable || !v.family) return;
-  // The family tan(rho_e/2) = m_e * t: sampled from flat to the fold limit of its fastest
-  // crease, with the closure residual and the letters checked at every sample.
+  // The family tan(rho_e/2) = m_e * t: each component sampled from flat to the fold limit of
+  // its fastest crease, with the closure residual and the letters checked at every sample.
   const FoldFamily& fam = *v.family;
-  int limiting = -1;
-  double largest = 0;
-  for (int e = 0; e < p.num_edges(); ++e)
-    if (fam.component[e] >= 0 && std::fabs(fam.multiplier[e]) > largest) {
-      largest = std::fabs(fam.multiplier[e]);
-      limiting = e;
-    }
-  const double lead_end = o.tolerances.fold_limit();
+  PathWatchOptions wo;
+  wo.tolerances = o.tolerances;
   for (int c = 0; c < fam.num_components; ++c) {
+    const int fastest = fam.fastest_crease(c);
+    if (fastest < 0) continue;  // a component always folds some crease; guard anyway
     TracedBranch b;
     b.id = c;
     b.from_point = 0;
     b.dof_at_departure = 1;
-    b.driving_edge = limiting;
+    b.driving_edge = fastest;
+    PathWatch watch(p, fastest, wo);
     for (int k = 1; k <= o.family_samples; ++k) {
-      const double lead = lead_end * k / o.family_samples;  // fold of the fastest crease
-      std::vector<double> params(fam.num_components, 0.0);
-      params[c] = limiting >= 0 ? fam.parameter_for(limiting, lead) : std::tan(lead / 2);
-      const Eigen::VectorXd rho = fam.angles(params);
+      const double lead = o.tolerances.fold_limit() * k / o.family_samples;  // fold of the fastest crease
+      const Eigen::VectorXd rho = fam.component_angles(c, fam.parameter_for(fastest, lead));
       b.max_residual = std::max(b.max_residual, max_vertex_closure_residual(t, rho));
       b.max_fold = std::max(b.max_fold, rho.cwiseAbs().maxCoeff());
-      for (int e = 0; e < p.num_edges() && b.signs_match_assignment; ++e)
-        if (assigned_fold_sign(p.assignments[e]) * rho[e] < 0) {
-          b.signs_match_assignment = false;
-          b.first_wrong_crease = e;
-        }
+      PathWatch::mark_letters(watch.observe(rho), b);
       b.path.push_back(rho);
     }
     b.valid_points = static_cast<int>(b.path.size());
-    b.driving_begin = 0.0;
-    b.driving_end = limiting >= 0 ? b.path.back()[limiting] : 0.0;
+    b.driving_end = b.path.back()[fastest];
     b.stopped_by = StopReason::kFoldLimit;
-    b.stop_crease = limiting;
-    b.stop_message = "fully folded: crease " + std::to_string(limiting) + " reaches 180 deg (local interference limit)";
+    b.stop_crease = fastest;
+    b.stop_message = "fully folded: crease " + std::to_string(fastest) + " reaches 180 deg (local interference limit)";
     r.max_residual = std::max(r.max_residual, b.max_residual);
     r.branches.push_back(std::move(b));
   }
@@ -154,7 +146,7 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   r.reason = g.reason;
   r.dof = g.verdict == Verdict::kRigidlyFoldable ? std::max(g.trace.dof_at_departure, 0) : 0;
   r.dof_basis = "rank of the closure Jacobian at the traced point, singular values below " +
-                std::to_string(o.tolerances.rank_cut) + " x largest dropped";
+                short_text(o.tolerances.rank_cut) + " x largest dropped";
   r.sign_switches = g.trace.sign_switches;
   r.max_residual = g.trace.max_residual;
   if (g.verdict == Verdict::kRigidlyFoldable) r.certificate_mismatch = g.certificate_mismatch;
@@ -189,7 +181,6 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
       r.branches.push_back(std::move(g.trace));
     }
     r.interference_checked = std::string(kLocalInterferenceOnly) + ": pattern too large for the branch explorer";
-    r.seconds = g.seconds;
     return;
   }
   // A branch from flat with DOF 1, every letter kept (or letters ignored), no face crossing
@@ -215,7 +206,6 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   r.branches = std::move(x.branches);
   r.points = std::move(x.points);
   r.interference_checked = std::string(kLocalAndGlobal) + " explored point";
-  r.seconds = g.seconds + x.seconds;
 }
 
 }  // namespace

@@ -30,13 +30,6 @@ std::vector<int> assigned_signs(const CreasePattern& p, bool use) {
   return s;
 }
 
-// First M/V crease with the wrong sign beyond tol, or -1.
-int wrong_sign(const Eigen::VectorXd& rho, const std::vector<int>& sign, double tol) {
-  for (int e = 0; e < static_cast<int>(sign.size()); ++e)
-    if (sign[e] != 0 && sign[e] * rho[e] < -tol) return e;
-  return -1;
-}
-
 // Driving creases: free creases touching two interior vertices first, then one, then none;
 // `count` of them spread evenly over that list.
 std::vector<int> driving_creases(const ClosureSystem& sys, const Topology& t, int count) {
@@ -56,7 +49,6 @@ std::vector<int> driving_creases(const ClosureSystem& sys, const Topology& t, in
 
 struct Tracer {
   const ClosureSystem& sys;
-  const std::vector<int>& sign;
   const GeneralVerdictOptions& opt;
   TracedBranch& trace;
   PathWatch watch;
@@ -64,11 +56,10 @@ struct Tracer {
   // between consecutive points means the Jacobian lost rank in between (a candidate
   // bifurcation); a point where the DOF is not 1 is itself singular.
   std::vector<SingularPoint>& singular_points;
-  BorderedDeterminantMonitor bordered;
+  BorderedDeterminantMonitor bordered{};
   bool bordered_active = false;
-  Eigen::VectorXd prev_x;
-  Eigen::VectorXd prev_rho;
-  int valid_points = 0;  // points of the path with every letter respected
+  Eigen::VectorXd prev_x{};
+  Eigen::VectorXd prev_rho{};
 
   void start_bordered(const Eigen::VectorXd& x, const Eigen::VectorXd& direction) {
     bordered_active = bordered.step(dense_jacobian(sys, x), direction).applicable;
@@ -115,7 +106,7 @@ struct Tracer {
       }
     }
     if (!invalid) {
-      valid_points = static_cast<int>(trace.path.size());
+      trace.valid_points = static_cast<int>(trace.path.size());
       trace.max_fold = std::max(trace.max_fold, rho.cwiseAbs().maxCoeff());
     }
     prev_rho = rho;
@@ -185,7 +176,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       }
       ++out.starts_converged;
       const Eigen::VectorXd rho = sys.edges_from_unknowns(nr.x);
-      const int bad = wrong_sign(rho, sign, opt.tolerances.sign_threshold);
+      const int bad = first_crease_against_letter(sign, rho, opt.tolerances.sign_threshold);
       if (bad >= 0) {
         ++out.starts_wrong_sign;
         if (out.wrong_sign_crease < 0) out.wrong_sign_crease = bad;
@@ -237,7 +228,8 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     trial.trace.dof_at_departure = rk.dof;
     PathWatchOptions wo;
     wo.tolerances = opt.tolerances;
-    Tracer tr{sys, sign, opt, trial.trace, PathWatch(pattern, cand.edge, wo), trial.singular_points};
+    trial.trace.valid_points = 0;  // points of the path with every letter respected
+    Tracer tr{sys, opt, trial.trace, PathWatch(pattern, cand.edge, wo), trial.singular_points};
     if (rk.dof == 1) {
       if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
       const ContinuationResult cr =
@@ -272,9 +264,8 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
         stop = tr.accept(x);
       }
     }
-    if (tr.valid_points > 0) {
-      trial.certificate_angles = trial.trace.path[tr.valid_points - 1];
-      trial.trace.valid_points = tr.valid_points;
+    if (trial.trace.valid_points > 0) {
+      trial.certificate_angles = trial.trace.path[trial.trace.valid_points - 1];
       trial.certificate_mismatch =
           place_faces(pattern, topology, trial.certificate_angles, reference_fold_angles(pattern, topology))
               .relative_mismatch();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <deque>
 #include <limits>
 #include <sstream>
@@ -479,12 +480,30 @@ Eigen::VectorXd FoldFamily::angles(const std::vector<double>& t) const {
     throw std::invalid_argument("FoldFamily::angles: " + std::to_string(t.size()) + " parameters for " +
                                 std::to_string(num_components) + " components");
   Eigen::VectorXd rho = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(component.size()));
-  for (std::size_t e = 0; e < component.size(); ++e)
-    if (component[e] >= 0) rho[e] = 2.0 * std::atan(multiplier[e] * t[component[e]]);
+  for (std::size_t e = 0; e < component.size(); ++e) {
+    if (component[e] < 0 || multiplier[e] == 0.0) continue;  // a zero multiplier stays flat, even at t = inf
+    const double tc = t[component[e]];
+    rho[e] = std::isinf(tc) ? std::copysign(std::numbers::pi, multiplier[e] * tc) : 2.0 * std::atan(multiplier[e] * tc);
+  }
   return rho;
 }
 
 Eigen::VectorXd FoldFamily::angles(double t) const { return angles(std::vector<double>(num_components, t)); }
+
+Eigen::VectorXd FoldFamily::component_angles(int c, double t) const {
+  std::vector<double> params(num_components, 0.0);
+  params.at(c) = t;
+  return angles(params);
+}
+
+int FoldFamily::fastest_crease(int c) const {
+  int fastest = -1;
+  for (std::size_t e = 0; e < component.size(); ++e)
+    if (component[e] == c && multiplier[e] != 0.0 &&
+        (fastest < 0 || std::fabs(multiplier[e]) > std::fabs(multiplier[fastest])))
+      fastest = static_cast<int>(e);
+  return fastest;
+}
 
 double FoldFamily::parameter_for(int edge, double rho) const {
   if (edge < 0 || edge >= static_cast<int>(component.size()) || component[edge] < 0 || multiplier[edge] == 0.0)

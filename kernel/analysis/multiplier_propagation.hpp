@@ -89,10 +89,16 @@ struct FoldFamily {
   int num_components = 0;
   std::vector<int> component;
   std::vector<double> multiplier;
-  // rho for every edge (radians, in (-pi, pi)); t has one entry per component.
+  // rho for every edge (radians, in [-pi, pi]); t has one entry per component. An infinite
+  // parameter is the fully folded state of its component: every folding crease at +-pi.
   Eigen::VectorXd angles(const std::vector<double>& t) const;
   // The same parameter for every component.
   Eigen::VectorXd angles(double t) const;
+  // Component c at parameter t, every other component flat.
+  Eigen::VectorXd component_angles(int c, double t) const;
+  // The crease of component c with the largest |multiplier|: the first to reach 180 deg as the
+  // component folds. -1 if the component has no folding crease.
+  int fastest_crease(int c) const;
   // The parameter of edge e's component that gives edge e the fold angle rho (|rho| < pi).
   // Throws std::invalid_argument if edge e stays flat in this family.
   double parameter_for(int edge, double rho) const;

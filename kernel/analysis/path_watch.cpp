@@ -5,12 +5,26 @@
 
 namespace rigidfold {
 
+int first_crease_against_letter(const std::vector<int>& letter_signs, const Eigen::VectorXd& rho,
+                                double sign_threshold) {
+  for (int e = 0; e < static_cast<int>(letter_signs.size()); ++e)
+    if (letter_signs[e] * rho[e] < -sign_threshold) return e;
+  return -1;
+}
+
+void PathWatch::mark_letters(const Segment& segment, TracedBranch& branch) {
+  if (segment.first_against_letter < 0 || !branch.signs_match_assignment) return;
+  branch.signs_match_assignment = false;
+  branch.first_wrong_crease = segment.first_against_letter;
+}
+
 PathWatch::PathWatch(const CreasePattern& pattern, int driving_edge, const PathWatchOptions& options,
                      std::vector<bool> movable)
     : letter_(pattern.num_edges(), 0), movable_(std::move(movable)), driving_edge_(driving_edge), options_(options),
       last_sign_(pattern.num_edges(), 0), at_180_(pattern.num_edges(), false) {
-  for (int e = 0; e < pattern.num_edges(); ++e) letter_[e] = assigned_fold_sign(pattern.assignments[e]);
   if (movable_.empty()) movable_.assign(pattern.num_edges(), true);
+  for (int e = 0; e < pattern.num_edges(); ++e)
+    if (movable_[e]) letter_[e] = assigned_fold_sign(pattern.assignments[e]);
   if (options_.letters_from_start) last_sign_ = letter_;
 }
 
@@ -22,11 +36,11 @@ PathWatch::Segment PathWatch::observe(const Eigen::VectorXd& rho) {
   // The first point has no segment: it only seeds the signs, unless the letters did.
   const bool record_switches =
       (!first || options_.letters_from_start) && !(options_.skip_first_segment && points_ == 1);
+  seg.first_against_letter = first_crease_against_letter(letter_, rho, tol.sign_threshold);
   double first_fraction = 2.0;
   for (int e = 0; e < static_cast<int>(letter_.size()); ++e) {
     if (!movable_[e]) continue;
     const double r = rho[e];
-    if (letter_[e] * r < -tol.sign_threshold && seg.first_against_letter < 0) seg.first_against_letter = e;
     if (!at_180_[e] && std::fabs(r) >= std::numbers::pi - tol.at_fold_limit) {
       at_180_[e] = true;
       seg.reached_180.push_back(e);

@@ -29,6 +29,12 @@
 
 namespace rigidfold {
 
+// The smallest crease index whose fold angle is against its letter sign (letter_signs[e] *
+// rho[e] < -sign_threshold; letter 0 never is), or -1. The one letter test of every tracer and
+// of the general verdict's search.
+int first_crease_against_letter(const std::vector<int>& letter_signs, const Eigen::VectorXd& rho,
+                                double sign_threshold);
+
 struct PathWatchOptions {
   Tolerances tolerances = kDefaultTolerances;
   bool letters_from_start = false;
@@ -53,6 +59,10 @@ class PathWatch {
 
   Segment observe(const Eigen::VectorXd& rho);
   int points() const { return points_; }
+
+  // Records the segment's first crease against its letter on the branch (signs_match_assignment,
+  // first_wrong_crease), once.
+  static void mark_letters(const Segment& segment, TracedBranch& branch);
 
  private:
   std::vector<int> letter_;

@@ -26,11 +26,8 @@ class BranchWatch {
               const ReferenceMobilityOptions& o, TracedBranch& b)
       : p_(p), t_(t), sys_(sys), reference_(reference), o_(o), b_(b),
         watch_(p, b.driving_edge, watch_options(o), movable(p, sys)), previous_x_(sys.unknowns_from_edges(reference)) {
-    const PathWatch::Segment seg = watch_.observe(reference);  // the given state seeds the signs
-    if (seg.first_against_letter >= 0) {
-      b.signs_match_assignment = false;  // the given state itself folds a crease against its letter
-      b.first_wrong_crease = seg.first_against_letter;
-    }
+    // The given state seeds the signs; it may itself fold a crease against its letter.
+    PathWatch::mark_letters(watch_.observe(reference), b);
   }
 
   Eigen::VectorXd angles(const Eigen::VectorXd& x) const {

@@ -55,16 +55,6 @@ void finish_steps(MotionBranch& b, const CreasePattern& p, const Topology& t, co
 
 // ---- multiplier model -------------------------------------------------------------------
 
-// rho of every edge of component c at parameter t (t may be +-inf: fully folded).
-Eigen::VectorXd family_angles(const FoldFamily& f, int c, double t) {
-  Eigen::VectorXd rho = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(f.component.size()));
-  for (std::size_t e = 0; e < f.component.size(); ++e) {
-    if (f.component[e] != c || f.multiplier[e] == 0.0) continue;
-    rho[e] = std::isinf(t) ? std::copysign(kPi, f.multiplier[e] * t) : 2.0 * std::atan(f.multiplier[e] * t);
-  }
-  return rho;
-}
-
 MotionBranch trace_family(const FoldFamily& f, int c, int drive, double to, int steps) {
   MotionBranch b;
   b.id = c;
@@ -80,7 +70,7 @@ MotionBranch trace_family(const FoldFamily& f, int c, int drive, double to, int 
                                          : f.parameter_for(drive, d);
     MotionStep s;
     s.drive = d;
-    s.rho = family_angles(f, c, t);
+    s.rho = f.component_angles(c, t);
     s.rho[drive] = d;  // exact driving value (the family gives it to rounding)
     b.steps.push_back(std::move(s));
   }
@@ -115,12 +105,7 @@ std::vector<MotionBranch> trace_families(const CreasePattern& p, const FoldFamil
         throw InputError("drive", "crease " + std::to_string(drive) + " belongs to branch " +
                                       std::to_string(f.component[drive]) + ", not " + std::to_string(c));
     } else {
-      double best = -1;
-      for (int e = 0; e < p.num_edges(); ++e)
-        if (f.component[e] == c && std::fabs(f.multiplier[e]) > best) {
-          best = std::fabs(f.multiplier[e]);
-          drive = e;
-        }
+      drive = f.fastest_crease(c);
     }
     const double to = rq.to ? *rq.to : default_direction(p.assignments[drive]) * to_radians(170.0);
     out.push_back(trace_family(f, c, drive, to, rq.steps));

@@ -1,6 +1,6 @@
 #pragma once
-// Numbers as text in messages and outputs: a fold angle in degrees for people (6 significant
-// digits) and a double that reads back bit for bit (17 significant digits).
+// Numbers as text in messages and outputs: a fold angle in degrees or any magnitude for people
+// (6 significant digits) and a double that reads back bit for bit (17 significant digits).
 #include <cstdio>
 #include <string>
 
@@ -12,6 +12,13 @@ namespace rigidfold {
 inline std::string degrees_text(double radians) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", to_degrees(radians));
+  return buf;
+}
+
+// x -> "%.6g": a tolerance or a magnitude in a message ("1e-09", not std::to_string's "0.000000").
+inline std::string short_text(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
   return buf;
 }
 
