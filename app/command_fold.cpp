@@ -12,6 +12,7 @@
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/json_input.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
@@ -34,13 +35,7 @@ void set_angle(Eigen::VectorXd& rho, const CreasePattern& p, const Topology& t, 
 }
 
 Eigen::VectorXd read_angles(const std::string& path, const CreasePattern& p, const Topology& t) {
-  const std::string text = read_text_file(path);
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path, std::string("not valid JSON: ") + e.what());
-  }
+  const nlohmann::json doc = parse_json_input(read_input_file(path), path);
   Eigen::VectorXd rho = stored_fold_angles(p);
   if (doc.is_object()) {
     for (auto it = doc.begin(); it != doc.end(); ++it) {

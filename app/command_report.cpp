@@ -32,6 +32,18 @@ namespace {
 using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
+// The pattern's title: file_title, else frame_title, else the file name. FOLD says both are
+// strings; one that is not is bad input, named by its key.
+std::string title_of(const CreasePattern& p, const fs::path& file) {
+  for (const char* key : {"file_title", "frame_title"}) {
+    if (!p.extra.contains(key)) continue;
+    const Json& v = p.extra.at(key);
+    if (!v.is_string()) throw InputError(file.string() + ": " + key, "must be a string, found " + std::string(v.type_name()));
+    return v.get<std::string>();
+  }
+  return file.stem().string();
+}
+
 Json analyse(const fs::path& file, const fs::path& out_dir) {
   const auto start = std::chrono::steady_clock::now();
   const CreasePattern p = read_fold(file.string());
@@ -40,7 +52,7 @@ Json analyse(const fs::path& file, const fs::path& out_dir) {
   Json j;
   j["name"] = file.stem().string();
   j["file"] = file.string();
-  j["title"] = p.extra.value("file_title", p.extra.value("frame_title", file.stem().string()));
+  j["title"] = title_of(p, file);
   j["vertices"] = p.num_vertices();
   j["edges"] = p.num_edges();
   j["faces"] = p.num_faces();

@@ -64,6 +64,8 @@
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/input_limits.hpp"
+#include "kernel/pattern/json_input.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -75,12 +77,7 @@ using namespace rigidfold::design;
 class Reader {
  public:
   Reader(std::string file) : file_(std::move(file)) {
-    const std::string text = read_text_file(file_);
-    try {
-      doc_ = json::parse(text);
-    } catch (const json::parse_error& e) {
-      throw InputError(file_, std::string("malformed JSON: ") + e.what());
-    }
+    doc_ = parse_json_input(read_input_file(file_), file_);
     if (!doc_.is_object()) fail("", "must be a JSON object");
   }
   const json& doc() const { return doc_; }
@@ -129,6 +126,11 @@ class Reader {
     std::string list;
     for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
     fail("/" + key, "must be one of " + list);
+  }
+  // Refuses an array longer than a documented limit (input_limits.hpp) before any work on it.
+  void check_size(const json& v, const std::string& ptr, std::int64_t limit, const std::string& what) const {
+    if (static_cast<std::int64_t>(v.size()) > limit)
+      fail(ptr, "has " + std::to_string(v.size()) + " " + what + "; the limit is " + std::to_string(limit));
   }
   const std::string& file() const { return file_; }
 
@@ -238,6 +240,7 @@ std::vector<Eigen::Vector3d> read_curve(const Reader& r) {
   std::vector<Eigen::Vector3d> pts;
   if (d.contains("points")) {
     const json& a = r.array(d, "", "points");
+    r.check_size(a, "/points", kMaxCurveDesignVertices + 2, "points (N + 2 for N vertices)");
     for (std::size_t k = 0; k < a.size(); ++k) {
       const std::string ptr = "/points/" + std::to_string(k);
       const auto v = r.numbers(a[k], ptr);
@@ -255,7 +258,10 @@ std::vector<Eigen::Vector3d> read_curve(const Reader& r) {
     const double rise = r.number(o, ptr, "rise");
     const double step = to_radians(r.number_in(o, ptr, "step_deg", -360, 360, "(-360, 360)"));
     const double count = r.number(o, ptr, "count");
-    if (count != std::floor(count) || count < 3 || count > 1e6) r.fail(ptr + "/count", "must be an integer in [3, 1e6]");
+    if (count != std::floor(count) || count < 3 || count > kMaxCurveDesignVertices + 2)
+      r.fail(ptr + "/count", "must be an integer in [3, " + std::to_string(kMaxCurveDesignVertices + 2) +
+                                 "] (N + 2 points for N vertices; the limit is " + std::to_string(kMaxCurveDesignVertices) +
+                                 " vertices)");
     for (int k = 0; k < static_cast<int>(count); ++k) {
       const double rad = radius + growth * k;
       pts.emplace_back(rad * std::cos(k * step), rad * std::sin(k * step), rise * k);
@@ -285,6 +291,7 @@ struct ForwardArgs {
 void read_forward_vertices(const Reader& r, const ForwardArgs& fa, const std::string& mode, MiuraString& s,
                            std::vector<double>& theta) {
   const json& verts = r.array(r.doc(), "", "vertices");
+  r.check_size(verts, "/vertices", kMaxStringVertices, "vertices");
   if (fa.theta_given && !(std::isfinite(fa.theta) && std::fabs(fa.theta) < 90)) throw InputError("--theta", "must be in (-90, 90) degrees");
   for (std::size_t i = 0; i < verts.size(); ++i) {
     const std::string ptr = "/vertices/" + std::to_string(i);
@@ -432,7 +439,14 @@ TrajectoryTarget read_trajectory_target(const Reader& r, const std::string& mode
   const int n = static_cast<int>(verts.size());
   TrajectoryTarget tt;
   tt.mode = mode == "transmitted" ? ThetaMode::Transmitted : ThetaMode::Independent;
-  tt.theta = r.numbers(r.at(r.doc(), "", "theta_deg"), "/theta_deg");
+  const json& samples = r.at(r.doc(), "", "theta_deg");
+  if (samples.is_array()) {
+    r.check_size(samples, "/theta_deg", kMaxTrajectorySamples, "samples");
+    if (static_cast<std::int64_t>(samples.size()) * n > kMaxTrajectoryValues)
+      r.fail("/theta_deg", std::to_string(samples.size()) + " samples x " + std::to_string(n) +
+                               " vertices is over the limit of " + std::to_string(kMaxTrajectoryValues) + " fitted values");
+  }
+  tt.theta = r.numbers(samples, "/theta_deg");
   if (tt.theta.empty()) r.fail("/theta_deg", "needs at least one sample");
   for (std::size_t k = 0; k < tt.theta.size(); ++k) {
     if (!(std::fabs(tt.theta[k]) < 90) || tt.theta[k] == 0) r.fail("/theta_deg/" + std::to_string(k), "must be in (-90, 90), nonzero");
@@ -486,6 +500,7 @@ DesignedString design_trajectories(const Reader& r, const std::string& mode, con
 DesignedString design_from_vertex_targets(const Reader& r, const std::string& kind, const StringBounds& bounds, json& j) {
   const std::string mode = r.string_of(r.doc(), "mode", "transmitted", {"transmitted", "independent"});
   const json& verts = r.array(r.doc(), "", "vertices");
+  r.check_size(verts, "/vertices", kMaxStringVertices, "vertices");
   const int n = static_cast<int>(verts.size());
   j["mode"] = mode;
   DesignedString out =
@@ -496,6 +511,12 @@ DesignedString design_from_vertex_targets(const Reader& r, const std::string& ki
 
 // "kind": "curve", NLopt: "algorithm" and "global" from the file, seeded by the closed form.
 NloptFitResult fit_curve_with_nlopt(const Reader& r, const std::vector<Eigen::Vector3d>& curve, const CurveDesignOptions& co) {
+  const int vertices = static_cast<int>(curve.size()) - 2;
+  if (vertices > kMaxNloptCurveVertices)
+    r.fail(r.doc().contains("points") ? "/points" : (r.doc().contains("helix") ? "/helix/count" : "/spiral/count"),
+           std::to_string(vertices) + " vertices: the NLopt fit (\"method\": \"nlopt\", or the default where the closed form "
+               "is not exact) is limited to " + std::to_string(kMaxNloptCurveVertices) + " vertices; the closed form takes up to " +
+               std::to_string(kMaxCurveDesignVertices));
   NloptFitOptions no;
   no.seed = co;
   if (r.doc().contains("algorithm")) {

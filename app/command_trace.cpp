@@ -46,6 +46,7 @@
 #include "kernel/math/number_text.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
@@ -139,6 +140,21 @@ std::optional<int> parse_branch_id(const std::string& text) {
   return id;
 }
 
+// --steps within the documented limits (kernel/pattern/input_limits.hpp), checked before any
+// step is computed: every step keeps its fold angles, placed vertices and face motions, and
+// --out writes them all.
+void check_steps(int steps, const CreasePattern& p) {
+  if (steps < 1 || steps > kMaxTraceSteps)
+    throw InputError("--steps", "must be between 1 and " + std::to_string(kMaxTraceSteps));
+  const std::int64_t per_step = p.num_edges() + 3 * std::int64_t{p.num_vertices()} + 16 * std::int64_t{p.num_faces()};
+  const std::int64_t most = std::max<std::int64_t>(1, kMaxTraceStepValues / per_step);
+  if (steps > most)
+    throw InputError("--steps", std::to_string(steps) + " steps of this pattern (" + std::to_string(p.num_edges()) + " edges, " +
+                                    std::to_string(p.num_faces()) + " faces) would store " + std::to_string(steps * per_step) +
+                                    " values, over the limit of " + std::to_string(kMaxTraceStepValues) + "; use at most " +
+                                    std::to_string(most) + " steps");
+}
+
 // The kernel names the request's field ("drive"); the user typed the flag ("--drive").
 MotionTrace trace_with_flag_names(const CreasePattern& p, const Topology& t, const TraceRequest& rq,
                                   const std::string& file) {
@@ -195,7 +211,7 @@ void add_trace_command(CLI::App& app) {
   cmd->callback([a] {
     const CreasePattern p = read_fold(a->pattern);
     const Topology t = build_topology(p, a->pattern);
-    if (a->steps < 1 || a->steps > 1000000) throw InputError("--steps", "must be between 1 and 1000000");
+    check_steps(a->steps, p);
     if (a->to && (!std::isfinite(*a->to) || std::fabs(*a->to) > 180.0))
       throw InputError("--to", "fold angle must be finite and within [-180, 180] deg");
     TraceRequest rq;

@@ -6,6 +6,11 @@
 
 namespace rigidfold::cli {
 
+// Builds the app with every subcommand, parses argv and runs the command. Returns the exit
+// status: 0 success, 2 bad input (CLI::ParseError, InputError, std::invalid_argument, and
+// std::bad_alloc: out of memory), 1 internal error (any other exception: a bug).
+int run_cli(int argc, const char* const* argv);
+
 void add_info_command(CLI::App& app);      // rigidfold info PATTERN.fold [--json]
 void add_fold_command(CLI::App& app);      // rigidfold fold PATTERN.fold --angles A.json --out F.fold [--obj F.obj]
 void add_check_command(CLI::App& app);     // rigidfold check PATTERN.fold [--ignore-assignment] [--json]

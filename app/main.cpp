@@ -1,41 +1,30 @@
-// rigidfold: command-line front end. Exit status 0 on success, 2 on bad input.
-#include <iostream>
+// rigidfold: command-line front end (app/run_cli.cpp). Exit status 0 on success, 2 on bad
+// input (including input past the documented limits, or too large for the memory
+// available), 1 only for an internal error (a bug).
+#include <csignal>
 
 #include "app/commands.hpp"
-#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/fold_io.hpp"
+
+namespace {
+
+// SIGINT/SIGTERM/SIGHUP: remove the temporary file of a write in progress (the old output,
+// if any, stays in place), then die of the signal as the default action would.
+extern "C" void on_terminating_signal(int sig) {
+  rigidfold::remove_pending_output_file();
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"rigidfold: exact kinematics of rigid origami"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "rigidfold 0.1.0");
-  rigidfold::cli::add_info_command(app);
-  rigidfold::cli::add_fold_command(app);
-  rigidfold::cli::add_check_command(app);
-  rigidfold::cli::add_vertex_command(app);
-  rigidfold::cli::add_generate_command(app);
-  rigidfold::cli::add_report_command(app);
-  rigidfold::cli::add_trace_command(app);
-  rigidfold::cli::add_string_command(app);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "rigidfold: error: " << e.what() << "\n";
-    return 2;
-  } catch (const rigidfold::InputError& e) {
-    std::cerr << "rigidfold: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "rigidfold: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "rigidfold: internal error: " << e.what() << "\n";
-    return 1;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction sa {};
+    sa.sa_handler = on_terminating_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    sigaction(sig, &sa, nullptr);
   }
-  return 0;
+  return rigidfold::cli::run_cli(argc, argv);
 }

@@ -5,12 +5,16 @@
 #include <cmath>
 #include <map>
 #include <cstdio>
-#include <fstream>
 #include <numbers>
-#include <sstream>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/json_input.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold {
@@ -179,43 +183,67 @@ void read_fold_angles(const Json& doc, CreasePattern& p, const std::string& sour
 
 }  // namespace
 
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path, "read error");
-  return ss.str();
+std::string read_text_file(const std::string& path) { return read_input_file(path); }
+
+namespace {
+
+// The temporary file being written, for remove_pending_output_file (a signal handler): a
+// fixed buffer and a flag, both safe to read from a handler.
+char g_pending_path[4096];
+volatile std::sig_atomic_t g_pending = 0;
+
+// Writes all of text to fd; false on any error.
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
+void remove_pending_output_file() {
+  if (g_pending) ::unlink(g_pending_path);
 }
 
 void write_text_file_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, "cannot write file");
-    out << text;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw InputError(path, "write failed");
-    }
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw InputError(path, "exists and is not a regular file; refusing to replace it");
+  static int counter = 0;
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  if (tmp.size() >= sizeof g_pending_path) throw InputError(path, "output path is too long");
+  std::memcpy(g_pending_path, tmp.c_str(), tmp.size() + 1);
+  g_pending = 1;
+  // O_EXCL: never write through a file or link that is already there under the temporary name.
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    g_pending = 0;
+    throw InputError(path, std::string("cannot write file: ") + std::strerror(errno));
+  }
+  const bool written = write_all(fd, text);
+  const bool closed = ::close(fd) == 0;
+  if (!written || !closed) {
+    ::unlink(tmp.c_str());
+    g_pending = 0;
+    throw InputError(path, std::string("write failed: ") + std::strerror(errno));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(path, "cannot rename temporary file into place");
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    g_pending = 0;
+    throw InputError(path, std::string("cannot rename temporary file into place: ") + std::strerror(err));
   }
+  g_pending = 0;
 }
 
 CreasePattern parse_fold(const std::string& text, const std::string& source) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(source, "file is empty");
-  Json doc;
-  try {
-    doc = Json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(source, std::string("not valid JSON (byte ") + std::to_string(e.byte) + "): " + e.what());
-  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large for a double
-    throw InputError(source, std::string("not valid JSON: ") + e.what());
-  }
+  const Json doc = parse_ordered_json_input(text, source);
   if (!doc.is_object()) throw InputError(source, "top level must be a JSON object, found " + std::string(doc.type_name()));
 
   CreasePattern p;

@@ -25,9 +25,16 @@ std::string write_fold_string(const CreasePattern& pattern);
 std::string dump_fold_json(const nlohmann::ordered_json& doc);
 void write_fold(const CreasePattern& pattern, const std::string& path);
 
-// Reads a whole file; throws InputError(path, ...) if it cannot be read.
+// Reads a whole regular file within the input limits (json_input.hpp: read_input_file);
+// throws InputError(path, ...) if it cannot be read, is not a regular file or is too large.
 std::string read_text_file(const std::string& path);
-// Writes via "<path>.tmp.<pid>" then rename; throws InputError(path, ...) on failure.
+// Writes via "<path>.tmp.<pid>.<n>" (created exclusively) then rename, so readers see the
+// old file or the whole new one; throws InputError(path, ...) on failure, and refuses to
+// replace anything but a regular file (a device such as /dev/null, a FIFO, a directory).
 void write_text_file_atomically(const std::string& path, const std::string& text);
+// Removes the temporary file of a write in progress, if any. Async-signal-safe: the CLI's
+// SIGINT/SIGTERM handler calls it, so an interrupted write leaves the old file, no partial
+// one and no temporary.
+void remove_pending_output_file();
 
 }  // namespace rigidfold

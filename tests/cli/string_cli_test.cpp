@@ -119,7 +119,7 @@ TEST(StringCli, BadInputExitsTwoNamingFileAndPathWithoutOutput) {
     std::string name, text, expect;
   };
   const std::vector<Case> cases{
-      {"malformed.json", "{\"kind\": \"deflections\", ", "malformed JSON"},
+      {"malformed.json", "{\"kind\": \"deflections\", ", "not valid JSON"},
       {"target.json",
        R"({"kind": "deflections", "theta_deg": 30, "segment_length": 1,
            "vertices": [{"phi_deg": 30, "psi_deg": 0}, {"phi_deg": -30, "psi_deg": 0}, {"phi_deg": 30, "psi_deg": 0},
@@ -129,7 +129,7 @@ TEST(StringCli, BadInputExitsTwoNamingFileAndPathWithoutOutput) {
        "missing.json: /vertices/0/psi_deg: missing"},
       {"range.json", R"({"kind": "curve", "helix": {"radius": 1, "rise": 1, "step_deg": 500, "count": 10}})",
        "range.json: /helix/step_deg: must be in (-360, 360)"},
-      {"nan.json", R"({"kind": "deflections", "theta_deg": NaN, "vertices": [], "segment_length": 1})", "malformed JSON"},
+      {"nan.json", R"({"kind": "deflections", "theta_deg": NaN, "vertices": [], "segment_length": 1})", "not valid JSON"},
       {"kind.json", R"({"kind": "spaghetti"})", "kind.json: /kind: must be one of"},
   };
   for (const auto& c : cases) {

@@ -1,0 +1,51 @@
+#include <iostream>
+#include <new>
+
+#include "app/commands.hpp"
+#include "kernel/pattern/input_error.hpp"
+
+namespace rigidfold::cli {
+
+int run_cli(int argc, const char* const* argv) {
+  CLI::App app{"rigidfold: exact kinematics of rigid origami"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "rigidfold 0.1.0");
+  add_info_command(app);
+  add_fold_command(app);
+  add_check_command(app);
+  add_vertex_command(app);
+  add_generate_command(app);
+  add_report_command(app);
+  add_trace_command(app);
+  add_string_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "rigidfold: error: " << e.what() << "\n";
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "rigidfold: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "rigidfold: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // Sizes are checked against the documented limits (kernel/pattern/input_limits.hpp)
+    // before allocating; this is an input within them that still needs more memory than
+    // the process may have (ulimit -v).
+    std::cerr << "rigidfold: error: out of memory: the input is too large for the memory available to this process\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "rigidfold: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace rigidfold::cli

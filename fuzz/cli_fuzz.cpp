@@ -1,0 +1,112 @@
+// libFuzzer targets that drive whole `rigidfold` commands in-process through run_cli (the
+// same exit-status mapping as the executable), one target per user-input entry:
+//   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold
+//   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
+//   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
+//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|check + flags from INPUT
+// The input is written to a file in a private temporary directory (the working directory
+// of the run). A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
+// error", an exception that is not bad input) aborts, so libFuzzer reports it with the
+// input, like a crash.
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "app/commands.hpp"
+
+#ifndef RIGIDFOLD_FUZZ_ENTRY
+#error "define RIGIDFOLD_FUZZ_ENTRY (1..4)"
+#endif
+
+namespace {
+
+struct NullBuffer : std::streambuf {
+  int overflow(int c) override { return c; }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
+// The bundled pattern that the angles and flags targets fold and trace.
+const std::string kPattern = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_3x3_perturbed.fold";
+
+void enter_private_directory() {
+  static bool done = false;
+  if (done) return;
+  char dir[] = "/tmp/rigidfold_fuzz_XXXXXX";
+  if (!::mkdtemp(dir) || ::chdir(dir) != 0) std::abort();
+  static NullBuffer null;
+  std::cout.rdbuf(&null);
+  std::cerr.rdbuf(&null);
+  done = true;
+}
+
+void write_input(const std::uint8_t* data, std::size_t size) {
+  std::ofstream out("input.json", std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+// Flags target: the input is tokens separated by newlines; the first byte picks the
+// command. Tokens with '/' are dropped, so every path stays inside the private directory.
+std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::string> args{"rigidfold"};
+  if (size == 0) return args;
+  switch (data[0] % 5) {
+    case 0: args.insert(args.end(), {"generate"}); break;
+    case 1: args.insert(args.end(), {"trace", kPattern}); break;
+    case 2: args.insert(args.end(), {"trace", kPattern, "--general"}); break;
+    case 3: args.insert(args.end(), {"vertex"}); break;
+    default: args.insert(args.end(), {"check", kPattern}); break;
+  }
+  std::string token;
+  const auto flush = [&] {
+    if (!token.empty() && token.find('/') == std::string::npos && token.find('\0') == std::string::npos && args.size() < 24)
+      args.push_back(token);
+    token.clear();
+  };
+  for (std::size_t i = 1; i < size; ++i) {
+    if (data[i] == '\n') flush();
+    else token.push_back(static_cast<char>(data[i]));
+  }
+  flush();
+  return args;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  enter_private_directory();
+  std::vector<std::string> args;
+  switch (RIGIDFOLD_FUZZ_ENTRY) {
+    case 1:
+      write_input(data, size);
+      args = {"rigidfold", "fold", kPattern, "--angles", "input.json", "--out", "out.fold", "--obj", "out.obj"};
+      break;
+    case 2:
+      write_input(data, size);
+      args = {"rigidfold", "string", "forward", "input.json", "--theta", "20", "--out", "out.fold", "--svg", "out.svg"};
+      break;
+    case 3:
+      write_input(data, size);
+      args = {"rigidfold", "string", "design", "input.json", "--out", "out.fold"};
+      break;
+    default:
+      args = flag_args(data, size);
+      break;
+  }
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  const int status = rigidfold::cli::run_cli(static_cast<int>(argv.size()), argv.data());
+  if (status != 0 && status != 2) {
+    std::fprintf(stderr, "run_cli returned %d (internal error) for:", status);
+    for (const auto& a : args) std::fprintf(stderr, " '%s'", a.c_str());
+    std::fprintf(stderr, "\n");
+    std::abort();
+  }
+  return 0;
+}

@@ -1,0 +1,38 @@
+#pragma once
+// The documented limits on user input. Every size-driven read or allocation that user input
+// controls is checked against one of these before it is made; going past one is bad input
+// (InputError naming the file, JSON path or flag; the CLI exits 2). README, "Bad input and
+// limits", lists them.
+#include <cstddef>
+#include <cstdint>
+
+namespace rigidfold {
+
+// Readers (kernel/pattern/json_input.hpp): every JSON input (FOLD, angles, string spec and
+// target) is read from a regular file of at most kMaxInputFileBytes, and its arrays and
+// objects may nest at most kMaxJsonDepth deep (the top-level object is depth 1). Deeper
+// documents are refused at parse time, so no later recursive copy, dump or comparison of
+// kept keys can overflow the stack.
+inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{256} << 20;  // 256 MiB
+inline constexpr int kMaxJsonDepth = 512;
+
+// `rigidfold trace`: at most kMaxTraceSteps steps, and at most kMaxTraceStepValues stored
+// values, steps x (edges + 3 x vertices + 16 x faces): every step keeps its fold angles,
+// placed vertices and face motions, and --out writes them all. Measured (Release): 5000
+// steps of the 4 x 4 Miura (1.9e6 values) take 0.95 s and 89 MB.
+inline constexpr int kMaxTraceSteps = 10000;
+inline constexpr std::int64_t kMaxTraceStepValues = 5000000;
+
+// `rigidfold string forward|design`: vertices of one origami string (spec or target
+// "vertices"; forward at the limit: 1.2 s), vertices of a curve target (points - 2; closed
+// form at the limit: 0.6 s) and of a curve fitted by NLopt (its time grows steeply: 30
+// vertices 5.4 s, 7.2 s with the global stage; 60 vertices 33 s; 100 vertices hit the 60 s
+// time cap), samples of a trajectory target (theta_deg entries),
+// and vertex-samples of a trajectory fit (vertices x samples).
+inline constexpr int kMaxStringVertices = 20000;
+inline constexpr int kMaxCurveDesignVertices = 2000;
+inline constexpr int kMaxNloptCurveVertices = 30;
+inline constexpr int kMaxTrajectorySamples = 2000;
+inline constexpr std::int64_t kMaxTrajectoryValues = 200000;
+
+}  // namespace rigidfold
