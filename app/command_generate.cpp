@@ -23,6 +23,7 @@
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/input_limits.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -207,6 +208,18 @@ CreasePattern make_corrugated(const GenerateOptions& o, gen::CorrugatedUnit unit
   return with_flags([&] { return gen::corrugated_unit(unit, p, interior); });
 }
 
+// Patterns of many cells: the size limit (input_limits.hpp) checked before generating. Each
+// generator checks its own ranges of --rows and --cols; this checks their product.
+void check_size(const GenerateOptions& o) {
+  const bool miura = o.kind == "miura", tessellation = o.kind == "square-twist-tessellation";
+  if (!(miura || tessellation) || o.rows < 1 || o.cols < 1) return;
+  const std::int64_t cells = std::int64_t{o.rows} * o.cols;
+  const std::int64_t limit = miura ? kMaxGeneratedMiuraCells : kMaxGeneratedTwistCells;
+  if (cells > limit)
+    throw InputError("--rows", "--rows x --cols = " + std::to_string(cells) + " cells, over the limit of " + std::to_string(limit) +
+                                   " for " + o.kind);
+}
+
 void report(const std::string& path, const CreasePattern& p) {
   std::cout << "wrote " << path << " (" << p.num_vertices() << " vertices, " << p.num_edges() << " edges, "
             << p.num_faces() << " faces): " << p.extra.value("file_title", std::string()) << "\n";
@@ -239,6 +252,7 @@ void run(const GenerateOptions& o, CLI::App& sub) {
   if (given("--out-dir")) throw InputError("--out-dir", "applies only to 'bundle'; use --out FILE.fold");
   if (o.out.empty()) throw InputError("--out", "is required (the .fold file to write)");
 
+  check_size(o);
   CreasePattern pattern;
   if (o.kind == "miura") pattern = make_miura(o, given("--fold-deg"));
   else if (o.kind == "miura-tube") pattern = make_miura_tube(o, given("--fold-deg"));

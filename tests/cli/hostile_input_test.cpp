@@ -144,6 +144,11 @@ std::vector<HostileCase> hostile_cases() {
       s.write("helix.json", R"({"kind": "curve", "helix": {"radius": 0.15, "rise": 1, "step_deg": 172, "count": 1000000}})");
   c.push_back({"string design helix of 1e6 points", "string design " + helix + " --out " + s.path("d.fold"), 2,
                helix + ": /helix/count: must be an integer in [3, "});
+  c.push_back({"generate miura 2000 x 2000", "generate miura --rows 2000 --cols 2000 --out " + s.path("g.fold"), 2,
+               "--rows: --rows x --cols = 4000000 cells, over the limit of " + std::to_string(kMaxGeneratedMiuraCells)});
+  c.push_back({"generate square-twist tessellation 500 x 500",
+               "generate square-twist-tessellation --rows 500 --cols 500 --out " + s.path("g.fold"), 2,
+               "--rows: --rows x --cols = 250000 cells, over the limit of " + std::to_string(kMaxGeneratedTwistCells)});
   const std::string nlopt_helix = s.write(
       "nlopt_helix.json", R"({"kind": "curve", "method": "nlopt", "helix": {"radius": 3, "rise": 0.3, "step_deg": 20, "count": 102}})");
   c.push_back({"string design by NLopt past its vertex limit", "string design " + nlopt_helix + " --out " + s.path("d.fold"), 2,
