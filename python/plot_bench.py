@@ -182,6 +182,40 @@ def targets_section(fams, exps):
     return out
 
 
+# Issue 11: the peer (osbo/rigid-origami, Python + Numba) measured elsewhere on a 2-core
+# machine, as the issue quotes it; rigidfold's targets are 20x the peer for the traces.
+PEER = [  # (family, n, peer seconds, target seconds or None, what)
+    ("BM_PeerTrace", 50, 9.5, 0.5, "`trace --general`, 50 x 50 Miura, 30 steps to 150 deg"),
+    ("BM_PeerTrace", 100, 56.0, 2.5, "`trace --general`, 100 x 100 Miura, 30 steps to 150 deg"),
+    ("BM_PeerCorrector", 100, 0.86, None, "one corrector from 1e-3 rad noise, 100 x 100"),
+    ("BM_PeerCorrector", 200, 5.9, None, "one corrector from 1e-3 rad noise, 200 x 200"),
+]
+
+
+def peer_section(fams):
+    """Issue 11's side-by-side table: rigidfold measured here, the peer as quoted."""
+    out = ["## Against the Python/Numba peer (issue 11)", "",
+           "Peer figures: osbo/rigid-origami (Python + Numba), measured elsewhere and quoted by issue 11; "
+           "rigidfold's from this run (BM_PeerTrace: the kernel's trace_motion with the general solver forced, "
+           "as `trace --general`, FOLD reading excluded).", "",
+           "| run | rigidfold s | peer s | ratio | target | status | error vs closed form | residual |",
+           "|---|---|---|---|---|---|---|---|"]
+    for fam, n, peer, target, what in PEER:
+        rs = [r for r in fams.get(fam, []) if cells(r) == n]
+        if not rs:
+            out.append(f"| {what} | not measured | {peer} | | {target or ''} | not measured | | |")
+            continue
+        r = rs[0]
+        t = seconds(r)[0]
+        status = ""
+        if target is not None:
+            status = verdict(t <= target) + ("" if t <= target else f" by {t - target:.3g} s")
+        out.append(f"| {what} | {t:.3g} | {peer} | {peer / t:.1f}x faster | {target or ''} | {status} | "
+                   f"{fmt(r.get('error_vs_closed_form'))} | {fmt(r.get('residual'))} |")
+    out.append("")
+    return out
+
+
 def profile_section(fams, largest):
     """Where the time of the missed targets goes: the corrector against its factorisations,
     and the phase timers of the largest trace (continuation stats counters)."""
@@ -324,7 +358,7 @@ def main():
                          f"{fmt(gc[e].get('error_vs_closed_form'))} |")
         lines.append("")
 
-    lines[4:4] = targets_section(fams, exps)
+    lines[4:4] = targets_section(fams, exps) + peer_section(fams)
 
     # Memory and accuracy against size.
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -122,7 +123,7 @@ class GeneralTracer {
  public:
   GeneralTracer(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& ref, const TraceRequest& rq,
                 int drive, double to)
-      : p_(p), ref_(ref), rq_(rq), sys_(p, t), kd_(sys_.unknown_of_edge(drive)), dir_(to > 0 ? 1.0 : -1.0) {
+      : p_(p), t_(t), ref_(ref), rq_(rq), sys_(p, t), kd_(sys_.unknown_of_edge(drive)), dir_(to > 0 ? 1.0 : -1.0) {
     b_.id = 0;
     b_.drive = drive;
     b_.to = to;
@@ -203,9 +204,19 @@ class GeneralTracer {
       return dir_ * x[kd_] >= std::fabs(b_.to) || max_abs(sys_.edges_from_unknowns(x)) >= fold_limit;
     };
     ContinuationOptions copt;
-    copt.max_step = 0.1;
+    // Steps of at most 0.2 rad in any crease, whatever the pattern's size (a fixed arclength
+    // took ~3,700 points on a 100 x 100 Miura), landing exactly on the output steps' driving
+    // values so that they need no projection of their own.
+    copt.max_angle_step = 0.2;
+    copt.initial_step = std::numeric_limits<double>::infinity();  // the first step at the cap
     copt.max_points = 20000;
     copt.tolerance = rq_.tolerances.residual;
+    copt.curved_predictor = true;
+    copt.landing_unknown = kd_;
+    // Not at the fold limit itself: a crease there is the fold-limit end's job (it holds every
+    // crease that reaches +-pi there, so that none passes it by a rounding error).
+    for (int k = 1; k <= rq_.steps; ++k)
+      if (std::fabs(b_.to * k / rq_.steps) < fold_limit) copt.landing_values.push_back(b_.to * k / rq_.steps);
     const ContinuationResult path = continue_one_dof(sys_, start, direction, stop, copt);
     if (path.points.empty()) {
       b_.message = "general solver: continuation failed at the start (" + path.reason + ")";
@@ -236,6 +247,7 @@ class GeneralTracer {
       }
       xs_.push_back(pt.x);
       ds_.push_back(d);
+      if (pt.landing >= 0) landed_[pt.landing + 1] = pt.x;
     }
     if (!ended && ds_.back() < limit_)
       clamp_at(ds_.back(), StopReason::kContinuationFailed,
@@ -252,6 +264,17 @@ class GeneralTracer {
                                           rq_.tolerances.residual);
     if (end && dir_ * end->x[kd_] > ds_.back()) {
       const double d_end = dir_ * end->x[kd_];
+      // A target at 180 deg itself: the solved end is the last step (its creases held at
+      // +-pi), even if the drive ends there a rounding error past the target.
+      if (d_end >= limit_ && d_end - limit_ <= rq_.tolerances.at_fold_limit) {
+        b_.stop = StopReason::kFoldLimit;
+        b_.stopped_by = "a crease reaches 180 deg at driving angle " + degrees_text(dir_ * d_end) +
+                        " deg (local interference limit)";
+        xs_.push_back(end->x);
+        ds_.push_back(d_end);
+        x_end_ = end->x;
+        return;
+      }
       if (d_end < limit_) {
         clamp_at(d_end, StopReason::kFoldLimit,
                  "a crease reaches 180 deg at driving angle " + degrees_text(dir_ * d_end) +
@@ -282,6 +305,20 @@ class GeneralTracer {
         s.rho = sys_.edges_from_unknowns(*x_end_);
         b_.steps.push_back(std::move(s));
         continue;
+      }
+      // A point the continuation landed on (its drive is exactly this step's, its residual
+      // within the tolerance): used as it is unless its per-vertex residual is above the
+      // tolerance, when the projection below polishes it.
+      if (limit_ == std::fabs(b_.to)) {
+        const auto hit = landed_.find(k);
+        if (hit != landed_.end()) {
+          const Eigen::VectorXd rho = sys_.edges_from_unknowns(hit->second);
+          if (max_vertex_closure_residual(t_, rho) <= nopt_.tolerance) {
+            s.rho = rho;
+            b_.steps.push_back(std::move(s));
+            continue;
+          }
+        }
       }
       std::size_t j = 1;
       while (j + 1 < ds_.size() && ds_[j] < d) ++j;
@@ -316,6 +353,7 @@ class GeneralTracer {
   }
 
   const CreasePattern& p_;
+  const Topology& t_;
   const Eigen::VectorXd& ref_;
   const TraceRequest& rq_;
   const ClosureSystem sys_;
@@ -327,6 +365,7 @@ class GeneralTracer {
   std::vector<double> ds_;           // ... and driving values along dir_
   double limit_ = 0.0;               // driving value (along dir_) the steps reach
   std::optional<Eigen::VectorXd> x_end_;  // the solved end at 180 deg, when the trace ends there
+  std::map<int, Eigen::VectorXd> landed_;  // output step k (1-based) -> the continuation point landed on it
 };
 
 // Default driving crease of the general tracer: the first foldable crease at an interior

@@ -109,8 +109,15 @@ struct Corrected {
 //     with a fresh factor there (a Newton step from the predictor converges fast);
 //   - a factor made in this corrector is kept while it contracts by chord_contraction,
 //     else refactorised at the current iterate (Newton again).
-Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd& t, double h,
-                  const Eigen::VectorXd& xp, const ContinuationOptions& options, bool reuse, bool try_stale) {
+// The constraint row: a.x = target (arclength: a = t, target = t.xk + h; landing: a = e_k,
+// target = the landing value).
+struct Constraint {
+  const Eigen::VectorXd& a;
+  double target;
+};
+
+Corrected correct(Linear& lin, const Constraint& con, const Eigen::VectorXd& t, const Eigen::VectorXd& xp,
+                  const ContinuationOptions& options, bool reuse, bool try_stale) {
   Corrected c;
   c.x = xp;
   Eigen::VectorXd r;
@@ -120,7 +127,7 @@ Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd&
   const int cap = reuse ? options.max_chord_iterations : options.max_corrector_iterations;
   for (;;) {
     lin.evaluate(c.x, r, c.J);
-    const double arc = t.dot(c.x - xk) - h;
+    const double arc = con.a.dot(c.x) - con.target;
     c.residual = std::max(r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0, std::abs(arc));
     if (c.residual <= options.tolerance) {
       c.converged = true;
@@ -148,14 +155,14 @@ Corrected correct(Linear& lin, const Eigen::VectorXd& xk, const Eigen::VectorXd&
       c.stale_tried = true;
     }
     const Eigen::VectorXd d = lin.solve(r);
-    const double tw = t.dot(lin.w());
-    if (std::abs(tw) < 1e-8) {
+    const double tw = con.a.dot(lin.w());
+    if (std::abs(tw) < 1e-8 * con.a.lpNorm<Eigen::Infinity>()) {
       if (refactor) return c;  // the tangent plane turned away: not a regular 1-DOF point
       force = true;            // perhaps only the stale w_fac did
       continue;
     }
     prev = c.residual;
-    c.x -= d + ((arc - t.dot(d)) / tw) * lin.w();
+    c.x -= d + ((arc - con.a.dot(d)) / tw) * lin.w();
     ++c.iterations;
   }
 }
@@ -258,7 +265,29 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     return out;
   }
   if (t.dot(direction) < 0) t = -t;
-  double h = options.initial_step;
+  // Step cap: in arclength, or by the largest change of an unknown (max_angle_step).
+  auto step_cap = [&](const Eigen::VectorXd& tangent) {
+    if (options.max_angle_step <= 0) return options.max_step;
+    return options.max_angle_step / std::max(tangent.lpNorm<Eigen::Infinity>(), 1e-300);
+  };
+  double h = std::min(options.initial_step, step_cap(t));
+  // Landing values ahead of the start, in order; `sense` is the way the landing unknown's
+  // values run.
+  const int land_k = options.landing_unknown;
+  const std::vector<double>& land = options.landing_values;
+  if (land_k >= system.num_unknowns()) throw std::invalid_argument("continue_one_dof: landing_unknown out of range");
+  std::size_t next_land = 0;
+  double sense = 0.0;
+  Eigen::VectorXd e_land;
+  if (land_k >= 0 && !land.empty()) {
+    sense = land.size() > 1 ? (land.back() > land.front() ? 1.0 : -1.0) : (land[0] >= start.x[land_k] ? 1.0 : -1.0);
+    e_land = Eigen::VectorXd::Zero(system.num_unknowns());
+    e_land[land_k] = 1.0;
+  }
+  auto skip_passed_landings = [&](const Eigen::VectorXd& x) {
+    while (next_land < land.size() && sense * (land[next_land] - x[land_k]) <= 0) ++next_land;
+  };
+  if (sense != 0) skip_passed_landings(start.x);
   // Reuse: after a stale factor failed, skip the stale attempt for 1, 2, 4, .. 16 steps
   // (each failed attempt costs solves and an evaluation); a success resets.
   int stale_skip = 0, stale_wait = 0;
@@ -269,7 +298,29 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
       return out;
     }
     const Eigen::VectorXd& xk = out.points.back().x;
-    const Corrected c = correct(lin, xk, t, h, xk + h * t, options, reuse, stale_wait == 0);
+    // Land on the next value if this step reaches it and the unknown is a usable parameter.
+    int landing = -1;
+    double hs = h;
+    if (sense != 0 && next_land < land.size()) {
+      const double tk = t[land_k];
+      const double gap = land[next_land] - xk[land_k];
+      if (sense * tk >= 0.05 * t.lpNorm<Eigen::Infinity>() && std::fabs(h * tk) >= std::fabs(gap)) {
+        hs = gap / tk;
+        landing = static_cast<int>(next_land);
+      }
+    }
+    // Predictor: the tangent line, plus the curvature term of the parabola through the
+    // previous point (x(s) = xk + s t + s^2 c, c from x(-h_prev) = x_prev): its error is
+    // O(h^3) instead of O(h^2), which saves about one Newton iteration per point.
+    Eigen::VectorXd xp = xk + hs * t;
+    if (out.points.size() >= 2 && options.curved_predictor && !reuse) {
+      const ContinuationPoint& last = out.points.back();
+      const double hp = last.step;
+      if (hp > 0) xp += (hs * hs / (hp * hp)) * (out.points[out.points.size() - 2].x - xk + hp * t);
+    }
+    const Corrected c = landing >= 0
+                            ? correct(lin, Constraint{e_land, land[next_land]}, t, xp, options, reuse, stale_wait == 0)
+                            : correct(lin, Constraint{t, t.dot(xk) + h}, t, xp, options, reuse, stale_wait == 0);
     st.corrector_iterations += c.iterations;
     if (c.stale_failed) {
       stale_skip = std::min(std::max(1, 2 * stale_skip), 16);
@@ -292,19 +343,22 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     }
     if (!c.converged || t_new.size() == 0 || std::acos(std::clamp(t_new.dot(t), -1.0, 1.0)) > 0.5) {
       ++st.rejected_steps;
-      h *= 0.5;
+      h = 0.5 * hs;
       if (h < options.min_step) {
         out.reason = "step too small";
         return out;
       }
       continue;
     }
-    out.points.push_back({c.x, c.residual, h, c.iterations});
+    out.points.push_back({c.x, c.residual, hs, c.iterations, landing});
+    if (sense != 0) skip_passed_landings(c.x);
     t = t_new;
     // Growth: Newton after a quick corrector; chord only while the factor needed no renewal
-    // (a larger step would make the stale factor contract worse).
+    // (a larger step would make the stale factor contract worse). A landing step keeps h
+    // (its own length was set by the landing value).
     const bool easy = reuse ? c.factorizations == 0 && c.iterations <= 5 : c.iterations <= 3;
-    if (easy) h = std::min(h * 1.5, options.max_step);
+    if (easy && landing < 0) h = std::min(h * 1.5, step_cap(t));
+    h = std::min(h, step_cap(t));
   }
   out.reason = "max_points";
   return out;

@@ -42,7 +42,7 @@ struct MinimumNormSolver::Impl {
   std::vector<int> row_vals_begin;       // m + 1
   std::vector<int> diag_slot;            // nf: G value slot of each diagonal entry
   Eigen::SparseMatrix<double> G;         // nf x nf, lower triangle, fixed pattern
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
   bool analysed = false;
 
   void kept_transpose_times(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& r, Eigen::VectorXd& out) const {
@@ -242,6 +242,17 @@ Eigen::VectorXd MinimumNormSolver::null_vector(const Eigen::SparseMatrix<double>
   if (w.dot(g) < 0) w = -w;
   Eigen::VectorXd out = Eigen::VectorXd::Zero(s.n);
   for (int f = 0; f < s.nf; ++f) out[s.kept[f]] = w[f];
+  return out;
+}
+
+Eigen::MatrixXd MinimumNormSolver::inverse_times(const Eigen::MatrixXd& V) const {
+  const Impl& s = *impl_;
+  if (V.rows() != s.n) throw std::invalid_argument("MinimumNormSolver::inverse_times: V needs one row per unknown");
+  Eigen::MatrixXd kept_block(s.nf, V.cols());
+  for (int f = 0; f < s.nf; ++f) kept_block.row(f) = V.row(s.kept[f]);
+  const Eigen::MatrixXd solved = s.llt.solve(kept_block);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(s.n, V.cols());
+  for (int f = 0; f < s.nf; ++f) out.row(s.kept[f]) = solved.row(f);
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "kernel/solve/rank.hpp"
 
+#include "kernel/solve/subspace_rank.hpp"
+
 #include <vector>
 
 #include <Eigen/Dense>
@@ -89,8 +91,18 @@ RankResult sparse_rank(const Eigen::SparseMatrix<double>& J, const RankOptions& 
 }  // namespace
 
 RankResult jacobian_rank(const Eigen::SparseMatrix<double>& J, const RankOptions& options) {
-  if (J.cols() <= options.dense_limit) return dense_rank(J, options);
-  return sparse_rank(J, options);
+  switch (options.method) {
+    case RankMethod::kDenseSvd: return dense_rank(J, options);
+    case RankMethod::kSpqr: return sparse_rank(J, options);
+    case RankMethod::kSubspace: break;
+    case RankMethod::kAuto:
+      if (J.cols() <= options.dense_limit || J.rows() == 0) return dense_rank(J, options);
+      break;
+  }
+  RankResult res = subspace_rank(J, options);
+  // G not factorisable, or more DOF than the largest block holds: the rank-revealing QR.
+  if (res.dof < 0) return sparse_rank(J, options);
+  return res;
 }
 
 }  // namespace rigidfold

@@ -9,7 +9,10 @@
 #include <iostream>
 #include <random>
 
+#include <Eigen/Dense>
+
 #include "data/generators/miura.hpp"
+#include "data/generators/waterbomb_tessellation.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "tests/closure/closure_test_utils.hpp"
@@ -19,6 +22,14 @@ namespace {
 
 using testing::miura_edge_angles;
 using testing::random_vector;
+
+Eigen::MatrixXd random_matrix(int rows, int cols, std::mt19937_64& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Eigen::MatrixXd A(rows, cols);
+  for (int c = 0; c < cols; ++c)
+    for (int r = 0; r < rows; ++r) A(r, c) = g(rng);
+  return A;
+}
 
 Eigen::SparseMatrix<double> jacobian_at(const ClosureSystem& sys, const Eigen::VectorXd& x) {
   Eigen::VectorXd r;
@@ -59,17 +70,32 @@ TEST(SolverRank, MiuraAtFoldedPointHasOneDof) {
       EXPECT_NEAR(std::fabs(t.dot(dense.null_space.col(0))), 1.0, 1e-8);
 
       RankOptions sparse_opt;
-      sparse_opt.dense_limit = 0;  // force SPQR
+      sparse_opt.method = RankMethod::kSpqr;
       const RankResult sparse = jacobian_rank(J, sparse_opt);
       EXPECT_EQ(sparse.method, "spqr");
       EXPECT_EQ(sparse.dof, 1) << rows << "x" << cols << " s " << s;
       ASSERT_EQ(sparse.null_space.cols(), 1);
       EXPECT_NEAR(std::fabs(sparse.null_space.col(0).dot(dense.null_space.col(0))), 1.0, 1e-10);
+
+      RankOptions subspace_opt;
+      subspace_opt.method = RankMethod::kSubspace;
+      const RankResult sub = jacobian_rank(J, subspace_opt);
+      EXPECT_EQ(sub.method, "cholmod-subspace");
+      EXPECT_TRUE(sub.converged);
+      EXPECT_EQ(sub.dof, 1) << rows << "x" << cols << " s " << s;
+      EXPECT_NEAR(sub.sigma_max, dense.sigma_max, 1e-6 * dense.sigma_max);  // Lanczos to 1e-6 on sigma^2
+      // The gap's upper side is a Ritz value: an upper bound of the dense sigma, settled to 1e-2.
+      EXPECT_GE(sub.sigma_kept, dense.sigma_kept * (1 - 1e-12));
+      EXPECT_LE(sub.sigma_kept, dense.sigma_kept * 1.02);
+      EXPECT_LT(sub.sigma_dropped, 1e-13);
+      ASSERT_EQ(sub.null_space.cols(), 1);
+      EXPECT_LE((J * sub.null_space).norm(), 1e-13);
+      EXPECT_NEAR(std::fabs(sub.null_space.col(0).dot(dense.null_space.col(0))), 1.0, 1e-12);
     }
   }
 }
 
-TEST(SolverRank, LargeMiuraUsesSpqr) {
+TEST(SolverRank, LargeMiuraUsesTheFactorSubspaceAndAgreesWithSpqr) {
   generators::MiuraParams m;
   m.rows = m.cols = 40;  // 3120 unknowns: above the dense limit
   const CreasePattern p = generators::miura_ori(m);
@@ -79,11 +105,94 @@ TEST(SolverRank, LargeMiuraUsesSpqr) {
   const RankResult r = jacobian_rank(J);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   print_rank("miura 40x40", r);
-  std::cout << "[ rank     ] miura 40x40 spqr time " << ms << " ms\n";
-  EXPECT_EQ(r.method, "spqr");
+  std::cout << "[ rank     ] miura 40x40 subspace time " << ms << " ms, " << r.iterations << " block iterations\n";
+  EXPECT_EQ(r.method, "cholmod-subspace");
+  EXPECT_TRUE(r.converged);
   EXPECT_EQ(r.dof, 1);
+  EXPECT_GT(r.sigma_kept, 1e3 * r.threshold);
   ASSERT_EQ(r.null_space.cols(), 1);
   EXPECT_LE((J * r.null_space).norm(), 1e-12);
+  RankOptions qr;
+  qr.method = RankMethod::kSpqr;
+  const RankResult q = jacobian_rank(J, qr);
+  EXPECT_EQ(q.method, "spqr");
+  EXPECT_EQ(q.dof, 1);
+  ASSERT_EQ(q.null_space.cols(), 1);
+  EXPECT_NEAR(std::fabs(q.null_space.col(0).dot(r.null_space.col(0))), 1.0, 1e-10);
+}
+
+// A matrix with known singular values (J = U diag(s) V^T, U and V random orthogonal): three
+// below the 1e-9 cut, one at 1e-7 just above it - below what J^T J can resolve (its
+// eigenvalue 1e-14 sits at the round-off of J^T J), so this checks that the Ritz step works
+// on J itself. The subspace method must count 3 and place the gap's upper side at 1e-7.
+TEST(SolverRank, SubspaceResolvesASingularValueBelowTheNormalEquationsFloor) {
+  const int m = 320, n = 260;
+  std::mt19937_64 rng(11);
+  const Eigen::MatrixXd U = Eigen::HouseholderQR<Eigen::MatrixXd>(random_matrix(m, m, rng)).householderQ();
+  const Eigen::MatrixXd V = Eigen::HouseholderQR<Eigen::MatrixXd>(random_matrix(n, n, rng)).householderQ();
+  Eigen::VectorXd s(n);
+  for (int i = 0; i < n; ++i) s[i] = 1.0 + 9.0 * i / (n - 1);  // 1 .. 10
+  s[n - 1] = 3e-13;
+  s[n - 2] = 1e-15;
+  s[n - 3] = 0.0;
+  s[n - 4] = 1e-7;
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(m, n);
+  S.diagonal() = s;
+  const Eigen::MatrixXd Jd = U * S * V.transpose();
+  const Eigen::SparseMatrix<double> J = Jd.sparseView();
+  RankOptions o;
+  o.method = RankMethod::kSubspace;
+  const RankResult r = jacobian_rank(J, o);
+  print_rank("known spectrum", r);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.dof, 3);
+  // A Lanczos Ritz value: never above sigma_max; this spectrum's top is a tight cluster
+  // (spacing 0.035), where it may stop inside it (subspace_rank.hpp).
+  EXPECT_LE(r.sigma_max, 10.0 * (1 + 1e-12));
+  EXPECT_GE(r.sigma_max, 9.8);
+  EXPECT_NEAR(r.sigma_kept, 1e-7, 1e-9);
+  EXPECT_LT(r.sigma_dropped, 1e-11);
+  ASSERT_EQ(r.null_space.cols(), 3);
+  // The null space found is the span of V's last three columns.
+  const Eigen::MatrixXd overlap = V.rightCols(3).transpose() * r.null_space;
+  EXPECT_NEAR(overlap.jacobiSvd().singularValues().minCoeff(), 1.0, 1e-9);
+  const RankResult dense = jacobian_rank(J);  // 260 unknowns: above the dense limit, so force it
+  RankOptions d;
+  d.method = RankMethod::kDenseSvd;
+  EXPECT_EQ(jacobian_rank(J, d).dof, 3);
+  EXPECT_EQ(dense.method, "cholmod-subspace");
+}
+
+// A waterbomb tessellation at a generic folded state has 2 (rows + cols) - 3 DOF: the block
+// has to grow past its first size (dof_hint + 4) to count them.
+TEST(SolverRank, SubspaceCountsManyDofAsTheDenseSvd) {
+  generators::WaterbombTessellationParams wp;
+  wp.rows = 4;
+  wp.cols = 5;
+  const CreasePattern p = generators::waterbomb_tessellation(wp);
+  const ClosureSystem sys(p, build_topology(p));
+  std::mt19937_64 rng(5);
+  NewtonOptions no;
+  no.max_iterations = 60;
+  const NewtonResult nr = newton_project(sys, random_vector(sys.num_unknowns(), rng, 0.4), no);
+  ASSERT_TRUE(nr.converged);
+  const Eigen::SparseMatrix<double> J = jacobian_at(sys, nr.x);
+  RankOptions d, o;
+  d.method = RankMethod::kDenseSvd;
+  o.method = RankMethod::kSubspace;
+  const RankResult dense = jacobian_rank(J, d), sub = jacobian_rank(J, o);
+  print_rank("waterbomb dense", dense);
+  print_rank("waterbomb subspace", sub);
+  EXPECT_EQ(dense.dof, 2 * (wp.rows + wp.cols) - 3);
+  EXPECT_EQ(sub.dof, dense.dof);
+  EXPECT_TRUE(sub.converged);
+  EXPECT_GE(sub.sigma_kept, dense.sigma_kept * (1 - 1e-12));
+  EXPECT_LE(sub.sigma_kept, dense.sigma_kept * 1.02);
+  ASSERT_EQ(sub.null_space.cols(), dense.dof);
+  // Same subspace: the principal angles between the two null spaces vanish.
+  const Eigen::MatrixXd overlap = dense.null_space.transpose() * sub.null_space;
+  EXPECT_NEAR(overlap.jacobiSvd().singularValues().minCoeff(), 1.0, 1e-9);
+  EXPECT_LE((J * sub.null_space).norm(), 1e-12);
 }
 
 // A generic single vertex of degree n (random sectors, not flat-foldable), brought to a
@@ -104,6 +213,10 @@ TEST(SolverRank, GenericSingleVertexHasDegreeMinusThreeDof) {
       print_rank("single vertex", r);
       EXPECT_EQ(r.dof, n - 3) << "degree " << n;
       EXPECT_GT(r.sigma_kept, 1e-6);
+      RankOptions o;
+      o.method = RankMethod::kSubspace;
+      const RankResult sub = jacobian_rank(jacobian_at(sys, res.x), o);
+      EXPECT_EQ(sub.dof, n - 3) << "degree " << n << " (subspace)";
       ++tested;
     }
     EXPECT_GE(tested, 2) << "degree " << n;
@@ -162,8 +275,12 @@ TEST(SolverRank, FlatMiuraIsSingular) {
     m.rows = m.cols = size;
     const CreasePattern p = generators::miura_ori(m);
     const ClosureSystem sys(p, build_topology(p));
-    const RankResult r = jacobian_rank(jacobian_at(sys, Eigen::VectorXd::Zero(sys.num_unknowns())));
+    const Eigen::SparseMatrix<double> J = jacobian_at(sys, Eigen::VectorXd::Zero(sys.num_unknowns()));
+    const RankResult r = jacobian_rank(J);
     print_rank("miura flat", r);
+    RankOptions o;
+    o.method = RankMethod::kSubspace;
+    EXPECT_EQ(jacobian_rank(J, o).dof, r.dof) << "subspace count at the flat state";
     EXPECT_GT(r.dof, 1);
     EXPECT_LE(r.rank, 2 * sys.num_vertices());
     EXPECT_GE(r.dof, sys.num_unknowns() - 2 * sys.num_vertices());
