@@ -11,7 +11,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
+#include <fcntl.h>
 #include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <thread>
 
 #include "kernel/pattern/fold_io.hpp"
@@ -237,6 +240,62 @@ TEST(HostileInput, TraceStepsLimitScalesWithThePattern) {
   EXPECT_NE(o.err.find("--steps: " + std::to_string(most + 1) + " steps"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("use at most " + std::to_string(most) + " steps"), std::string::npos) << o.err;
   EXPECT_FALSE(fs::exists(scratch().path("never.fold")));
+}
+
+// True once a temporary of `out` ("<out>.tmp.<pid>.<n>") exists in dir.
+bool temporary_exists(const fs::path& dir, const std::string& name) {
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().rfind(name + ".tmp.", 0) == 0) return true;
+  return false;
+}
+
+// SIGINT/SIGTERM while `trace --out` computes, and while it writes (the signal sent as soon
+// as the temporary appears): the old file stays, or the new one is complete (the run
+// finished first); never a partial file, never a temporary left over.
+TEST(HostileInput, InterruptedTraceLeavesTheOldFileOrTheWholeNewOne) {
+  const std::string miura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_12x12_folded.fold";
+  const fs::path dir = scratch().path("interrupt");
+  fs::create_directories(dir);
+  const std::string out = (dir / "t.fold").string();
+  const std::string cli = test::cli();
+  const int steps = 600;
+  int interrupted_while_writing = 0;
+  for (int sig : {SIGINT, SIGTERM})
+    for (bool during_write : {false, true}) {
+      const std::string what = "signal " + std::to_string(sig) + (during_write ? " during the write" : " during the trace");
+      std::ofstream(out) << "old";
+      const pid_t pid = ::fork();
+      ASSERT_GE(pid, 0);
+      if (pid == 0) {
+        const int null = ::open("/dev/null", O_WRONLY);
+        ::dup2(null, 1);
+        ::dup2(null, 2);
+        ::execl(cli.c_str(), cli.c_str(), "trace", miura.c_str(), "--steps", std::to_string(steps).c_str(), "--out", out.c_str(),
+                nullptr);
+        ::_exit(127);
+      }
+      int status = 0;
+      if (during_write) {
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(kSeconds);
+        while (!temporary_exists(dir, "t.fold") && ::waitpid(pid, &status, WNOHANG) == 0 && std::chrono::steady_clock::now() < give_up)
+          std::this_thread::sleep_for(std::chrono::microseconds(200));
+        interrupted_while_writing += temporary_exists(dir, "t.fold");
+      } else {
+        std::this_thread::sleep_for(std::chrono::milliseconds(30));
+      }
+      ::kill(pid, sig);  // harmless if it already exited (not yet reaped)
+      ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+      const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      EXPECT_TRUE(finished || (WIFSIGNALED(status) && WTERMSIG(status) == sig)) << what;
+      const std::string text = read_text_file(out);
+      if (text != "old") {
+        const CreasePattern p = read_fold(out);  // complete: it parses, with every step's frame
+        EXPECT_EQ(p.extra["file_frames"].size(), static_cast<std::size_t>(steps)) << what;
+      }
+      EXPECT_FALSE(temporary_exists(dir, "t.fold")) << what << ": temporary left behind";
+    }
+  // The write window was hit at least once (the temporary seen before the signal).
+  EXPECT_GE(interrupted_while_writing, 1);
 }
 
 }  // namespace
