@@ -164,6 +164,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       nopt.tolerance = opt.tolerances.residual;
       nopt.held_unknowns = {k};
       nopt.max_iterations = opt.least_squares_iterations;
+      nopt.stall_window = opt.least_squares_stall_window;
       const NewtonResult nr = newton_project(sys, x0, nopt);
       ++out.starts_tried;
       if (!nr.converged) {

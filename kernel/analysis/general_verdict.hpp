@@ -75,6 +75,7 @@ struct GeneralVerdictOptions {
   int max_path_points = 4000;
   double driven_step = 0.05;         // DOF > 1: step of the driving crease (radians)
   int least_squares_iterations = 60; // Gauss-Newton steps of the obstruction search
+  int least_squares_stall_window = 5;  // ... ended early on a plateau (NewtonOptions::stall_window)
   int singular_detection_limit = 600;  // bordered-determinant test only up to this many unknowns
   ContinuationOptions continuation;  // DOF-1 tracing
 };

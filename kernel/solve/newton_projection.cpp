@@ -297,6 +297,11 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
     system.evaluate(result.x, r, J);
     rnorm = r.lpNorm<Eigen::Infinity>();
     result.residual_history.push_back(rnorm);
+    const int w = options.stall_window;
+    if (w > 0 && result.iterations >= w && rnorm > options.tolerance) {
+      const double before = result.residual_history[result.residual_history.size() - 1 - w];
+      if (rnorm > options.stall_factor * before) break;  // on a plateau
+    }
   }
   result.converged = rnorm <= options.tolerance;
   return result;

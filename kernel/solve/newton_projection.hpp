@@ -46,6 +46,12 @@ struct NewtonOptions {
   double lambda_relative = 1e-14;   // regularisation, relative to max diag(J J^T)
   double max_step = 0.5;            // ||dx||_inf cap per step (radians); steps are scaled down to it
   std::vector<int> held_unknowns;   // indices of unknowns kept at their starting value
+  // > 0: stop early (not converged) once ||r||_inf has fallen by less than stall_factor over
+  // the last stall_window steps - a least-squares search on an inconsistent system sits on
+  // its plateau long before max_iterations. Newton converging, even linearly at a singular
+  // solution (ratio 1/2 per step), falls by far more than 0.9 over 5 steps. 0: off.
+  int stall_window = 0;
+  double stall_factor = 0.9;
   FactorOrdering ordering = FactorOrdering::kDefault;
 };
 
