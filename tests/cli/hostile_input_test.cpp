@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -240,6 +241,48 @@ TEST(HostileInput, TraceStepsLimitScalesWithThePattern) {
   EXPECT_NE(o.err.find("--steps: " + std::to_string(most + 1) + " steps"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("use at most " + std::to_string(most) + " steps"), std::string::npos) << o.err;
   EXPECT_FALSE(fs::exists(scratch().path("never.fold")));
+}
+
+// Patterns with no interior vertex, or in several components, or with one vertex of degree
+// 20: the general solver answers (no crash) with the DOF counted by hand. Creases that meet
+// no interior vertex fold independently (DOF = their number); a single generic vertex of
+// degree n has n - 3 DOF (one SO(3) closure).
+TEST(HostileInput, GeneralSolverOnStripsComponentsAndHighDegree) {
+  const Scratch& s = scratch();
+  const std::string strip = s.write("strip.fold",
+                                    R"({"vertices_coords": [[0,0],[1,0],[2,0],[3,0],[3,1],[2,1],[1,1],[0,1]],)"
+                                    R"( "edges_vertices": [[0,1],[1,2],[2,3],[3,4],[4,5],[5,6],[6,7],[7,0],[1,6],[2,5]],)"
+                                    R"( "edges_assignment": ["B","B","B","B","B","B","B","B","M","V"]})");
+  const std::string two = s.write("two_squares.fold",
+                                  R"({"vertices_coords": [[0,0],[1,0],[1,1],[0,1],[3,0],[4,0],[4,1],[3,1]],)"
+                                  R"( "edges_vertices": [[0,1],[1,2],[2,3],[3,0],[0,2],[4,5],[5,6],[6,7],[7,4],[4,6]],)"
+                                  R"( "edges_assignment": ["B","B","B","B","V","B","B","B","B","M"]})");
+  std::string star = R"({"vertices_coords": [[0,0])";
+  std::string edges, letters;
+  const int n = 20;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * 3.14159265358979323846 * k / n;
+    star += ",[" + std::to_string(std::cos(a)) + "," + std::to_string(std::sin(a)) + "]";
+    edges += std::string(k ? "," : "") + "[0," + std::to_string(k + 1) + "],[" + std::to_string(k + 1) + "," + std::to_string((k + 1) % n + 1) + "]";
+    letters += std::string(k ? "," : "") + (k % 2 ? "\"M\",\"B\"" : "\"V\",\"B\"");
+  }
+  const std::string degree20 = s.write("degree20.fold", star + "], \"edges_vertices\": [" + edges + "], \"edges_assignment\": [" + letters + "]}");
+  struct Expect {
+    std::string file, flags;
+    int dof;
+  };
+  for (const Expect& e : {Expect{strip, "", 2}, Expect{strip, " --ignore-assignment", 2}, Expect{two, "", 2},
+                          Expect{two, " --ignore-assignment", 2}, Expect{degree20, " --ignore-assignment", n - 3}}) {
+    const Outcome o = run_limited("check --general --json " + e.file + e.flags);
+    ASSERT_EQ(o.status, 0) << e.file << e.flags << ": " << o.err;
+    const auto j = nlohmann::json::parse(o.out);
+    EXPECT_EQ(j["verdict_class"], "foldable") << e.file << e.flags;
+    EXPECT_EQ(j["dof"], e.dof) << e.file << e.flags;
+  }
+  for (const std::string& f : {strip, two, degree20}) {
+    const Outcome o = run_limited("trace --general --branch all --json " + f);
+    EXPECT_EQ(o.status, 0) << f << ": " << o.err;
+  }
 }
 
 // True once a temporary of `out` ("<out>.tmp.<pid>.<n>") exists in dir.
