@@ -4,8 +4,7 @@
 //   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|check + flags from INPUT
-// The input is written to a file in a private temporary directory (the working directory
-// of the run). A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
+// The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
 // error", an exception that is not bad input) aborts, so libFuzzer reports it with the
 // input, like a crash.
 #include <cstddef>
@@ -35,19 +34,26 @@ struct NullBuffer : std::streambuf {
 // The bundled pattern that the angles and flags targets fold and trace.
 const std::string kPattern = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_3x3_perturbed.fold";
 
-void enter_private_directory() {
-  static bool done = false;
-  if (done) return;
-  char dir[] = "/tmp/rigidfold_fuzz_XXXXXX";
-  if (!::mkdtemp(dir) || ::chdir(dir) != 0) std::abort();
-  static NullBuffer null;
-  std::cout.rdbuf(&null);
-  std::cerr.rdbuf(&null);
-  done = true;
+// The private temporary directory every run writes in (created once). The flags target
+// also makes it the working directory, so that the relative paths its tokens may name stay
+// inside it; run it with absolute corpus paths and -artifact_prefix (as .ci/run does).
+const std::string& private_directory() {
+  static const std::string dir = [] {
+    char name[] = "/tmp/rigidfold_fuzz_XXXXXX";
+    if (!::mkdtemp(name)) std::abort();
+    static NullBuffer null;
+    std::cout.rdbuf(&null);
+    std::cerr.rdbuf(&null);
+    if (RIGIDFOLD_FUZZ_ENTRY == 4 && ::chdir(name) != 0) std::abort();
+    return std::string(name);
+  }();
+  return dir;
 }
 
+std::string in_private(const std::string& name) { return private_directory() + "/" + name; }
+
 void write_input(const std::uint8_t* data, std::size_t size) {
-  std::ofstream out("input.json", std::ios::binary | std::ios::trunc);
+  std::ofstream out(in_private("input.json"), std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
 }
 
@@ -80,20 +86,20 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  enter_private_directory();
+  const std::string input = in_private("input.json"), out = in_private("out.fold");
   std::vector<std::string> args;
   switch (RIGIDFOLD_FUZZ_ENTRY) {
     case 1:
       write_input(data, size);
-      args = {"rigidfold", "fold", kPattern, "--angles", "input.json", "--out", "out.fold", "--obj", "out.obj"};
+      args = {"rigidfold", "fold", kPattern, "--angles", input, "--out", out, "--obj", in_private("out.obj")};
       break;
     case 2:
       write_input(data, size);
-      args = {"rigidfold", "string", "forward", "input.json", "--theta", "20", "--out", "out.fold", "--svg", "out.svg"};
+      args = {"rigidfold", "string", "forward", input, "--theta", "20", "--out", out, "--svg", in_private("out.svg")};
       break;
     case 3:
       write_input(data, size);
-      args = {"rigidfold", "string", "design", "input.json", "--out", "out.fold"};
+      args = {"rigidfold", "string", "design", input, "--out", out};
       break;
     default:
       args = flag_args(data, size);
