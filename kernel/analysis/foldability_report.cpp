@@ -45,7 +45,7 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
   r.verdict = class_of(m.verdict, r.is_proof);
   r.reason = m.reason;
   r.dof = m.dof;
-  r.dof_basis = "rank of the closure Jacobian (vertex and hole rows) at the given state, singular values below " +
+  r.dof_basis = "rank of the closure Jacobian (vertex and hole rows) at the given state (" + m.dof_method + "), singular values below " +
                 short_text(o.tolerances.rank_cut) + " x largest dropped; kept " + short_text(m.sigma_kept) +
                 ", dropped " + short_text(m.sigma_dropped);
   r.holes_closed = m.holes;
@@ -145,7 +145,7 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   r.verdict = class_of(g.verdict, g.is_proof);
   r.reason = g.reason;
   r.dof = g.verdict == Verdict::kRigidlyFoldable ? std::max(g.trace.dof_at_departure, 0) : 0;
-  r.dof_basis = "rank of the closure Jacobian at the traced point, singular values below " +
+  r.dof_basis = "rank of the closure Jacobian at the traced point (" + g.trace.dof_method + "), singular values below " +
                 short_text(o.tolerances.rank_cut) + " x largest dropped";
   r.sign_switches = g.trace.sign_switches;
   r.max_residual = g.trace.max_residual;

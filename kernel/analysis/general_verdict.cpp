@@ -227,6 +227,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     ro.relative_tolerance = opt.tolerances.rank_cut;
     const RankResult rk = jacobian_rank(J, ro);
     trial.trace.dof_at_departure = rk.dof;
+    trial.trace.dof_method = rk.method;
     PathWatchOptions wo;
     wo.tolerances = opt.tolerances;
     trial.trace.valid_points = 0;  // points of the path with every letter respected

@@ -130,6 +130,7 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
   ro.relative_tolerance = o.tolerances.rank_cut;
   const RankResult rank = jacobian_rank(J, ro);
   m.dof = rank.dof;
+  m.dof_method = rank.method;
   m.sigma_kept = rank.sigma_kept;
   m.sigma_dropped = rank.sigma_dropped;
   if (m.dof == 0) {

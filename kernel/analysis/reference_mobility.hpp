@@ -50,6 +50,7 @@ struct ReferenceMobilityOptions {
 struct ReferenceMobility {
   Verdict verdict = Verdict::kUndecided;
   int dof = 0;                     // at the reference state
+  std::string dof_method;          // RankResult::method that counted it
   int holes = 0;                   // SE(3) hole closures used
   double reference_residual = 0;   // ||r(x0)||_inf
   double sigma_kept = 0, sigma_dropped = 0;  // singular values either side of the rank cut

@@ -48,6 +48,7 @@ struct TracedBranch {
   int from_point = -1, to_point = -1;  // branch explorer: indices of its points (-1: open end / given state)
   int sense = 0;                       // given-state branches: +1 / -1, the two ways out
   int dof_at_departure = -1;           // first-order DOF where it starts (1 for a traced 1-DOF branch)
+  std::string dof_method;              // how it was counted (RankResult::method), empty if not counted
   int driving_edge = -1;               // the crease whose fold angle parameterises the branch
   double driving_begin = 0.0, driving_end = 0.0;  // its fold angle at the ends (radians)
   std::vector<Eigen::VectorXd> path;   // per-edge fold angles at every accepted point (radians)

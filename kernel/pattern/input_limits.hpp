@@ -19,9 +19,11 @@ inline constexpr int kMaxJsonDepth = 512;
 // `rigidfold trace`: at most kMaxTraceSteps steps, and at most kMaxTraceStepValues stored
 // values, steps x (edges + 3 x vertices + 16 x faces): every step keeps its fold angles,
 // placed vertices and face motions, and --out writes them all. Measured (Release): 5000
-// steps of the 4 x 4 Miura (1.9e6 values) take 0.95 s and 89 MB.
+// steps of the 4 x 4 Miura (1.9e6 values) take 0.95 s and 89 MB (~47 bytes a value, so the
+// limit is ~1.4 GB). 3e7 and not less: issue 11's 30-step trace of a 100 x 100 Miura stores
+// 6.3e6 values (5e6 refused it).
 inline constexpr int kMaxTraceSteps = 10000;
-inline constexpr std::int64_t kMaxTraceStepValues = 5000000;
+inline constexpr std::int64_t kMaxTraceStepValues = 30000000;
 
 // `rigidfold string forward|design`: vertices of one origami string (spec or target
 // "vertices"; forward at the limit: 1.2 s), vertices of a curve target (points - 2; closed
