@@ -18,9 +18,11 @@
 //      a Lanczos run on J^T J (Spectra, 16 vectors, to 1e-6 relative on sigma_max^2; a Ritz
 //      value, so never above the true sigma_max, and on a spectrum whose top is a tight
 //      cluster it may settle on a value inside the cluster: 1.4% low on a test matrix with 260
-//      singular values evenly spread over [1, 10] - harmless for a cut 1e-9 of it). The iteration stops when the Ritz value just above
-//      the cut (the gap's upper side) has settled to 1e-3 relative; if the whole block is
-//      below the cut it doubles (up to max_block) and goes on.
+//      singular values evenly spread over [1, 10] - harmless for a cut 1e-9 of it).
+//      The iteration stops when the Ritz value just above the cut (the gap's upper side) has
+//      settled to 1e-2 relative, or, from the third iteration, when it is 1e3 x the cut (the
+//      DOF is then decided, and that Ritz value is an upper bound of sigma_kept, unsettled);
+//      if the whole block is below the cut it doubles (up to max_block) and goes on.
 // What is proved and what is estimated: the DOF is at least the count found (each Ritz value
 // below the cut is an upper bound of a singular value); that no singular value below the cut
 // was missed rests on the convergence of the block (reported: `converged`, iterations) - it
