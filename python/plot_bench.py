@@ -227,7 +227,7 @@ def profile_section(fams, largest):
         out.append(f"- Corrector at {cells(corr)} x {cells(corr)} ({int(corr['edges'])} creases): {tc:.3g} s for "
                    f"{its:.0f} Newton iterations; one numeric factorisation of J^T J + lambda I costs {tf:.3g} s "
                    f"(BM_Factorize), so factorisations are ~{min(its * tf / tc, 1) * 100:.0f}% of it. The factorisation "
-                   f"is flop-bound (supernodal CHOLMOD, fill of a 2D mesh under nested dissection): a single one "
+                   f"is flop-bound (simplicial CHOLMOD LLT, fill of a 2D mesh under AMD or nested dissection): a single one "
                    f"already exceeds the 1 s budget there.")
     for fam, label in (("BM_Trace", "Newton (default)"), ("BM_Trace_reuse", "factorisation reuse (chord, opt-in)")):
         r = largest(fam)
