@@ -109,11 +109,14 @@ struct Corrected {
 //     with a fresh factor there (a Newton step from the predictor converges fast);
 //   - a factor made in this corrector is kept while it contracts by chord_contraction,
 //     else refactorised at the current iterate (Newton again).
-// The constraint row: a.x = target (arclength: a = t, target = t.xk + h; landing: a = e_k,
-// target = the landing value).
+// The constraint row: a.(x - origin) = offset (arclength: a = t, origin = xk, offset = h;
+// landing: a = e_k, origin = xk, offset = value - xk[k]). Measured from xk, not as a.x =
+// target: a.x is of the size of x (hundreds of radians on a large mesh), and its rounding
+// would sit near the corrector's 1e-12 tolerance.
 struct Constraint {
   const Eigen::VectorXd& a;
-  double target;
+  const Eigen::VectorXd& origin;
+  double offset;
 };
 
 Corrected correct(Linear& lin, const Constraint& con, const Eigen::VectorXd& t, const Eigen::VectorXd& xp,
@@ -127,7 +130,7 @@ Corrected correct(Linear& lin, const Constraint& con, const Eigen::VectorXd& t, 
   const int cap = reuse ? options.max_chord_iterations : options.max_corrector_iterations;
   for (;;) {
     lin.evaluate(c.x, r, c.J);
-    const double arc = con.a.dot(c.x) - con.target;
+    const double arc = con.a.dot(c.x - con.origin) - con.offset;
     c.residual = std::max(r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0, std::abs(arc));
     if (c.residual <= options.tolerance) {
       c.converged = true;
@@ -319,8 +322,9 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
       if (hp > 0) xp += (hs * hs / (hp * hp)) * (out.points[out.points.size() - 2].x - xk + hp * t);
     }
     const Corrected c = landing >= 0
-                            ? correct(lin, Constraint{e_land, land[next_land]}, t, xp, options, reuse, stale_wait == 0)
-                            : correct(lin, Constraint{t, t.dot(xk) + h}, t, xp, options, reuse, stale_wait == 0);
+                            ? correct(lin, Constraint{e_land, xk, land[next_land] - xk[land_k]}, t, xp, options, reuse,
+                                      stale_wait == 0)
+                            : correct(lin, Constraint{t, xk, h}, t, xp, options, reuse, stale_wait == 0);
     st.corrector_iterations += c.iterations;
     if (c.stale_failed) {
       stale_skip = std::min(std::max(1, 2 * stale_skip), 16);
