@@ -15,7 +15,7 @@
 //      sigma below ~1e-8 sigma_max). By Courant-Fischer, s_i >= sigma_i(J) (i-th smallest)
 //      for any orthonormal V, so every Ritz value below the cut is a true one.
 //   4. DOF = #{s_i <= threshold}, threshold = relative_tolerance * sigma_max, sigma_max from
-//      a Lanczos run on J^T J (Spectra, 16 vectors, to 1e-6 relative on sigma_max^2; a Ritz
+//      a Lanczos run on J^T J (Spectra, 16 vectors, Ritz residual 1e-3 relative on sigma_max^2; a Ritz
 //      value, so never above the true sigma_max, and on a spectrum whose top is a tight
 //      cluster it may settle on a value inside the cluster: 1.4% low on a test matrix with 260
 //      singular values evenly spread over [1, 10] - harmless for a cut 1e-9 of it).
