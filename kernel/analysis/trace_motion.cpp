@@ -264,21 +264,18 @@ class GeneralTracer {
                                           rq_.tolerances.residual);
     if (end && dir_ * end->x[kd_] > ds_.back()) {
       const double d_end = dir_ * end->x[kd_];
-      // A target at 180 deg itself: the solved end is the last step (its creases held at
-      // +-pi), even if the drive ends there a rounding error past the target.
-      if (d_end >= limit_ && d_end - limit_ <= rq_.tolerances.at_fold_limit) {
-        b_.stop = StopReason::kFoldLimit;
-        b_.stopped_by = "a crease reaches 180 deg at driving angle " + degrees_text(dir_ * d_end) +
-                        " deg (local interference limit)";
-        xs_.push_back(end->x);
-        ds_.push_back(d_end);
-        x_end_ = end->x;
-        return;
-      }
-      if (d_end < limit_) {
-        clamp_at(d_end, StopReason::kFoldLimit,
-                 "a crease reaches 180 deg at driving angle " + degrees_text(dir_ * d_end) +
-                     " deg (local interference limit)" + (std::fabs(b_.to) - d_end > 1e-9 ? "; clamped" : ""));
+      // A target at 180 deg itself: the solved end is the last step too (its creases held at
+      // +-pi), even if the drive ends there a rounding error past the target; limit_ stays.
+      const bool at_target = d_end >= limit_ && d_end - limit_ <= rq_.tolerances.at_fold_limit;
+      if (d_end < limit_ || at_target) {
+        std::string text = "a crease reaches 180 deg at driving angle " + degrees_text(dir_ * d_end) +
+                           " deg (local interference limit)" + (std::fabs(b_.to) - d_end > 1e-9 ? "; clamped" : "");
+        if (at_target) {
+          b_.stop = StopReason::kFoldLimit;
+          b_.stopped_by = std::move(text);
+        } else {
+          clamp_at(d_end, StopReason::kFoldLimit, std::move(text));
+        }
         xs_.push_back(end->x);
         ds_.push_back(d_end);
         x_end_ = end->x;

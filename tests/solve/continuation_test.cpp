@@ -19,6 +19,17 @@ namespace {
 
 using testing::miura_edge_angles;
 
+// Unknown of the first valley straight crease of a Miura: its fold angle is the closed
+// form's parameter (-1 if there is none).
+int valley_straight_driver(const ClosureSystem& sys, const CreasePattern& p, const generators::MiuraParams& m) {
+  const auto kinds = generators::miura_crease_kinds(m);
+  for (int k = 0; k < sys.num_unknowns(); ++k) {
+    const int e = sys.edge_of_unknown(k);
+    if (kinds[e] == generators::MiuraCrease::Straight && p.assignments[e] == Assignment::Valley) return k;
+  }
+  return -1;
+}
+
 TEST(SolverContinuation, MiuraTracedTo170DegreesMatchesClosedForm) {
   generators::MiuraParams m;
   m.rows = 4;
@@ -26,12 +37,7 @@ TEST(SolverContinuation, MiuraTracedTo170DegreesMatchesClosedForm) {
   m.alpha = 1.1;
   const CreasePattern p = generators::miura_ori(m);
   const ClosureSystem sys(p, build_topology(p));
-  const auto kinds = generators::miura_crease_kinds(m);
-  int driver = -1;  // a valley straight crease: its fold angle is the closed form's parameter
-  for (int k = 0; k < sys.num_unknowns() && driver < 0; ++k) {
-    const int e = sys.edge_of_unknown(k);
-    if (kinds[e] == generators::MiuraCrease::Straight && p.assignments[e] == Assignment::Valley) driver = k;
-  }
+  const int driver = valley_straight_driver(sys, p, m);
   ASSERT_GE(driver, 0);
   const double start = 0.05, target = to_radians(170.0);
   const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
@@ -79,12 +85,7 @@ TEST(SolverContinuation, LandsOnEveryRequestedDrivingValue) {
   m.alpha = 1.1;
   const CreasePattern p = generators::miura_ori(m);
   const ClosureSystem sys(p, build_topology(p));
-  const auto kinds = generators::miura_crease_kinds(m);
-  int driver = -1;
-  for (int k = 0; k < sys.num_unknowns() && driver < 0; ++k) {
-    const int e = sys.edge_of_unknown(k);
-    if (kinds[e] == generators::MiuraCrease::Straight && p.assignments[e] == Assignment::Valley) driver = k;
-  }
+  const int driver = valley_straight_driver(sys, p, m);
   ASSERT_GE(driver, 0);
   const double start = to_radians(5.0), target = to_radians(160.0);
   const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
@@ -133,12 +134,7 @@ TraceCheck trace_miura(int n, double target_deg, double steps, FactorizationReus
   m.alpha = 1.1;
   const CreasePattern p = generators::miura_ori(m);
   const ClosureSystem sys(p, build_topology(p));
-  const auto kinds = generators::miura_crease_kinds(m);
-  int driver = -1;
-  for (int k = 0; k < sys.num_unknowns() && driver < 0; ++k) {
-    const int e = sys.edge_of_unknown(k);
-    if (kinds[e] == generators::MiuraCrease::Straight && p.assignments[e] == Assignment::Valley) driver = k;
-  }
+  const int driver = valley_straight_driver(sys, p, m);
   EXPECT_GE(driver, 0);
   const double start = to_radians(5), target = to_radians(target_deg);
   const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
