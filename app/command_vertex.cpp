@@ -20,6 +20,12 @@
 namespace rigidfold::cli {
 namespace {
 
+// The closed range of --alpha1/--alpha2 (degrees), documented in the README.
+constexpr double kMinAlphaDeg = 1e-300;
+constexpr double kMaxAlphaDeg = 90.0 - 1e-12;
+// The closed range of each --twists value (degrees): one turn either way.
+constexpr double kMaxTwistDeg = 360.0;
+
 // Asymmetric Miura vertex closed form (kernel/vertex/miura_vertex.hpp). theta is half the
 // fold angle of the incoming spinal crease; flags are in degrees, checked here so that the
 // error names the flag.
@@ -30,13 +36,16 @@ void add_miura_command(CLI::App& vertex) {
     bool json = false;
   };
   auto a = std::make_shared<Args>();
-  miura->add_option("--alpha1", a->alpha1, "angle between the outgoing spinal crease and peripheral crease b, degrees in (0, 90)")->required();
-  miura->add_option("--alpha2", a->alpha2, "angle between the outgoing spinal crease and peripheral crease d, degrees in (0, 90)")->required();
+  miura->add_option("--alpha1", a->alpha1, "angle between the outgoing spinal crease and peripheral crease b, degrees in [1e-300, 90 - 1e-12]")->required();
+  miura->add_option("--alpha2", a->alpha2, "angle between the outgoing spinal crease and peripheral crease d, degrees in [1e-300, 90 - 1e-12]")->required();
   miura->add_option("--theta", a->theta, "half the fold angle of the incoming spinal crease, degrees, valley > 0, |theta| <= theta_limit")->required();
   miura->add_flag("--json", a->json, "print JSON");
   miura->callback([a] {
+    // Closed range: below 1e-300 deg the angle in radians is subnormal (not even its
+    // value is accurate); 90 deg itself is a degenerate vertex (b or d across the spine).
     for (const auto& [flag, v] : {std::pair{"--alpha1", a->alpha1}, std::pair{"--alpha2", a->alpha2}})
-      if (!std::isfinite(v) || !(v > 0.0) || !(v < 90.0)) throw InputError(flag, "must be in (0, 90) degrees");
+      if (!std::isfinite(v) || !(v >= kMinAlphaDeg) || !(v <= kMaxAlphaDeg))
+        throw InputError(flag, "must be in [1e-300, 90 - 1e-12] degrees");
     if (!std::isfinite(a->theta)) throw InputError("--theta", "must be finite");
     const double limit = miura_theta_limit(to_radians(a->alpha1), to_radians(a->alpha2));
     // Compared in degrees, as printed: --theta equal to the printed limit is accepted
@@ -44,7 +53,8 @@ void add_miura_command(CLI::App& vertex) {
     if (std::fabs(a->theta) > to_degrees(limit))
       throw InputError("--theta", "|theta| must not exceed theta_limit = " + std::to_string(to_degrees(limit)) + " degrees");
     const double theta = std::clamp(to_radians(a->theta), -limit, limit);
-    const MiuraVertexState st = miura_vertex(to_radians(a->alpha1), to_radians(a->alpha2), theta);
+    // Verified before printing: closure residual and sign claims (NoAnswerError -> exit 3).
+    const MiuraVertexState st = miura_vertex_checked(to_radians(a->alpha1), to_radians(a->alpha2), theta);
     nlohmann::ordered_json j;
     j["alpha1_deg"] = a->alpha1;
     j["alpha2_deg"] = a->alpha2;
@@ -94,17 +104,19 @@ void add_vertex_command(CLI::App& app) {
     bool json = false;
   };
   auto a = std::make_shared<Args>();
-  s4r->add_option("--twists", a->twists, "alpha12,alpha23,alpha34,alpha41 in degrees")->required()->delimiter(',')->expected(4);
+  s4r->add_option("--twists", a->twists, "alpha12,alpha23,alpha34,alpha41 in degrees, each in [-360, 360]")->required()->delimiter(',')->expected(4);
   s4r->add_option("--input", a->input, "joint angle 1 (fold angle of crease 1) in degrees, valley > 0")->required();
   s4r->add_flag("--json", a->json, "print JSON");
   add_miura_command(*vertex);
   s4r->callback([a] {
     if (a->twists.size() != 4) throw InputError("--twists", "needs exactly 4 values, got " + std::to_string(a->twists.size()));
     for (std::size_t i = 0; i < 4; ++i)
-      if (!std::isfinite(a->twists[i])) throw InputError("--twists[" + std::to_string(i) + "]", "must be finite");
+      if (!std::isfinite(a->twists[i]) || !(std::fabs(a->twists[i]) <= kMaxTwistDeg))
+        throw InputError("--twists[" + std::to_string(i) + "]", "must be in [-360, 360] degrees");
     if (!std::isfinite(a->input) || std::fabs(a->input) > 180.0) throw InputError("--input", "must be within [-180, 180] degrees");
     const S4RSectors tw{to_radians(a->twists[0]), to_radians(a->twists[1]), to_radians(a->twists[2]), to_radians(a->twists[3])};
-    const S4RBranches b = s4r_branches(tw, to_radians(a->input), 0);
+    // Every branch verified (closure residual) before printing: NoAnswerError -> exit 3.
+    const S4RBranches b = s4r_branches_checked(tw, to_radians(a->input), 0);
     const S4RInputRange range = s4r_input_range(tw, 0);
     nlohmann::ordered_json j;
     j["twists_deg"] = a->twists;

@@ -58,7 +58,14 @@
 // free of divisions by zero at theta = 0 and of the cancellation at alpha1 = alpha2
 // (q is computed from a2 - a1 directly). phi, psi and the fold angles are accurate to a few
 // ulps relative to their size from theta = 0 to theta_limit (tested against a 50-digit
-// reference), for alpha in roughly [1e-150, pi/2) (sin a1 sin a2 must not underflow).
+// reference), for alpha in [1e-300 deg, pi/2): the pattern constants are divided by
+// max(sin a1, sin a2) before any product, so a tiny alpha underflows nothing (as alpha1 -> 0
+// the vertex tends to a straight line a-c with d flat: rho_b -> 4 theta, rho_d -> 0).
+//
+// Check. miura_vertex_checked verifies what the state claims before it is used as an
+// answer: the closure residual |log R| of the four fold angles (vertex_closure.hpp) at most
+// kMiuraClosureTolerance, rho_a = -2 theta and rho_c = 2 theta, rho_b and rho_d in [-pi, pi]
+// with the sign of theta (0 at theta = 0). A state that fails is never returned.
 #include <Eigen/Core>
 #include <array>
 #include <string_view>
@@ -110,6 +117,25 @@ std::array<double, 4> miura_sectors(double alpha1, double alpha2);
 // Output: MiuraVertexState (see above). theta = 0 gives the flat vertex (phi = psi = 0).
 // Throws std::invalid_argument naming "alpha1", "alpha2" or "theta" on bad input.
 MiuraVertexState miura_vertex(double alpha1, double alpha2, double theta);
+
+// Closure tolerance of miura_vertex_checked (rad). The closed form reaches ~1e-15 over the
+// whole domain (tests/vertex/miura_vertex_test.cpp); 1e-10 leaves room for the loop
+// product's own rounding without passing a wrong branch (those miss by > 1e-3).
+inline constexpr double kMiuraClosureTolerance = 1e-10;
+
+// Closure residual |log R| (rad) of the state's fold angles about its sectors, and
+// whether the sign claims above hold. Never throws.
+struct MiuraVertexCheck {
+  double closure_residual = 0.0;
+  bool signs_ok = true;
+  bool passed() const { return signs_ok && closure_residual <= kMiuraClosureTolerance; }
+};
+MiuraVertexCheck check_miura_vertex(const MiuraVertexState& state);
+
+// miura_vertex, verified by check_miura_vertex. Throws std::invalid_argument as
+// miura_vertex, and NoAnswerError (kernel/pattern/no_answer_error.hpp, with the residual)
+// if the state fails its check.
+MiuraVertexState miura_vertex_checked(double alpha1, double alpha2, double theta);
 
 // Relative rotation between the spinal crease frames, R = [x_out y_out z_out] expressed in
 // the incoming frame (columns are the outgoing frame's axes):

@@ -3,11 +3,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Dense>
+#include <cstdio>
+#include <span>
+
 #include "kernel/math/so3.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
 
@@ -116,6 +123,56 @@ S4RBranches s4r_branches(const S4RSectors& sectors, double rho_in, int input_cre
     S4RFoldAngles rho{};
     for (int j = 0; j < 4; ++j) rho[(input_crease + j) % 4] = local[j];
     out.branches.push_back(rho);
+  }
+  return out;
+}
+
+namespace {
+
+double closure_residual(const S4RSectors& sectors, const S4RFoldAngles& rho) {
+  const double r = vertex_closure_residual(std::span<const double>(sectors.data(), 4), std::span<const double>(rho.data(), 4)).norm();
+  return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
+}
+
+// Gauss-Newton on log R(rho) = 0 over the three free fold angles (rank-revealing least
+// squares: at a motion limit the 3 x 3 Jacobian is singular). Returns the residual reached.
+double refine_branch(const S4RSectors& sectors, S4RFoldAngles& rho, int input_crease) {
+  double best = closure_residual(sectors, rho);
+  Eigen::Vector3d r;
+  Eigen::Matrix3Xd J;
+  for (int it = 0; it < 30 && best > 0.1 * kS4RClosureTolerance; ++it) {
+    vertex_closure_jacobian(std::span<const double>(sectors.data(), 4), std::span<const double>(rho.data(), 4), r, J);
+    Eigen::Matrix3d Jf;
+    for (int j = 0, c = 0; j < 4; ++j)
+      if (j != input_crease) Jf.col(c++) = J.col(j);
+    const Eigen::Vector3d step = Jf.completeOrthogonalDecomposition().solve(-r);
+    if (!step.allFinite()) break;
+    S4RFoldAngles next = rho;
+    for (int j = 0, c = 0; j < 4; ++j)
+      if (j != input_crease) next[j] = wrap_angle(next[j] + step[c++]);
+    const double res = closure_residual(sectors, next);
+    if (!(res < best)) break;
+    best = res;
+    rho = next;
+  }
+  return best;
+}
+
+}  // namespace
+
+S4RBranches s4r_branches_checked(const S4RSectors& sectors, double rho_in, int input_crease) {
+  S4RBranches out = s4r_branches(sectors, rho_in, input_crease);
+  for (auto& branch : out.branches) {
+    double res = closure_residual(sectors, branch);
+    if (res > kS4RClosureTolerance) res = refine_branch(sectors, branch, input_crease);
+    if (!(res <= kS4RClosureTolerance)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "spherical 4R with twists (%.17g, %.17g, %.17g, %.17g) rad at input %.17g rad: a branch has closure "
+                    "residual %.3e rad (tolerance %.0e) even after Newton refinement",
+                    sectors[0], sectors[1], sectors[2], sectors[3], rho_in, res, kS4RClosureTolerance);
+      throw NoAnswerError(text, res);
+    }
   }
   return out;
 }

@@ -84,6 +84,17 @@ struct S4RBranches {
 S4RBranches s4r_branches(const S4RSectors& sectors, double rho_in, int input_crease = 0,
                          double tol = 1e-12);
 
+// Closure tolerance of s4r_branches_checked (rad): |log R| of each returned branch.
+inline constexpr double kS4RClosureTolerance = 1e-10;
+
+// s4r_branches (default tol), every branch verified before it is returned: its closure
+// residual |log R| (vertex_closure.hpp) must be at most kS4RClosureTolerance. A branch that
+// misses (near a motion limit the closed form's double root is only located to ~sqrt(tol))
+// is refined by Gauss-Newton on the loop closure with the input crease held (the general
+// route); if it still misses, throws NoAnswerError (kernel/pattern/no_answer_error.hpp)
+// carrying the residual. Never returns a branch above the tolerance.
+S4RBranches s4r_branches_checked(const S4RSectors& sectors, double rho_in, int input_crease = 0);
+
 // Range of the input angle over which the linkage closes (its motion limits).
 // The set of feasible inputs is always symmetric, {rho : min_abs <= |rho| <= max_abs}:
 // the cosine of the angle between creases in+1 and in+3 is affine in cos(rho_in) and has
