@@ -43,4 +43,14 @@ inline constexpr std::int64_t kMaxTrajectoryValues = 200000;
 inline constexpr std::int64_t kMaxGeneratedMiuraCells = 250000;
 inline constexpr std::int64_t kMaxGeneratedTwistCells = 62500;
 
+// SVG crease patterns (svg_reader.hpp; file size as above): elements nested at most
+// kMaxSvgDepth deep, at most kMaxSvgElements XML elements and kMaxSvgSegments straight
+// segments in crease colours, and at most kMaxSvgCandidatePairs pairs of nearby segments
+// tested for crossings (only a pile of overlapping lines comes near it: segments are paired
+// only when they share a cell of a grid with ~1 segment per cell).
+inline constexpr int kMaxSvgDepth = 256;
+inline constexpr int kMaxSvgElements = 2000000;
+inline constexpr int kMaxSvgSegments = 500000;
+inline constexpr std::int64_t kMaxSvgCandidatePairs = 50000000;
+
 }  // namespace rigidfold

@@ -1,0 +1,60 @@
+#pragma once
+// Planar arrangement of labelled line segments: the plane straight-line graph a drawing of
+// creases stands for. Segments are split where they cross or touch, endpoints closer than a
+// tolerance become one vertex, and an edge drawn twice becomes one edge.
+//
+// Inputs:  segments in the plane (any length unit) with an integer label each (the caller's
+//          meaning: an assignment and fold angle) and the index of the drawing element it
+//          came from; `tolerance` (same length unit, > 0): points closer than this are one
+//          vertex, and a point closer than this to a segment splits it there.
+// Output:  vertices, edges (each with the label and source of the first segment that drew
+//          it), and what was done: crossings split, points merged (with the largest distance
+//          a point moved), duplicate edges, conflicts (one edge drawn with two labels), and
+//          degree-2 vertices removed (two collinear edges of one label joined into one, as
+//          Origami Simulator's importer does).
+// Limits:  `max_candidate_pairs` bounds the pairs of nearby segments tested (a pile of
+//          overlapping segments is quadratic); past it, build_planar_arrangement throws
+//          std::length_error, which the caller reports as bad input.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace rigidfold {
+
+struct LabelledSegment {
+  Eigen::Vector2d a, b;
+  int label = 0;
+  int source = 0;  // caller's index of the element that drew it (for messages)
+};
+
+struct LabelConflict {
+  int source_a = 0, source_b = 0;  // the two drawing elements
+  int label_a = 0, label_b = 0;
+  Eigen::Vector2d from, to;        // the shared piece
+};
+
+struct PlanarArrangement {
+  std::vector<Eigen::Vector2d> vertices;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<int> edge_label;
+  std::vector<int> edge_source;
+  int crossings = 0;             // points where two segments cross inside both
+  int touches = 0;               // segment ends lying on another segment (T-junctions, overlaps)
+  int merged_points = 0;         // input/derived points merged into another (distinct coordinates only)
+  double max_merge_distance = 0;  // largest distance from a merged point to its vertex
+  int zero_length_segments = 0;  // dropped: shorter than the tolerance
+  int duplicate_edges = 0;       // drawn more than once with the same label
+  int collinear_vertices_removed = 0;
+  std::vector<LabelConflict> conflicts;  // drawn more than once with different labels
+};
+
+struct ArrangementOptions {
+  double tolerance = 0;                          // absolute, > 0
+  bool remove_collinear_degree2 = true;
+  std::int64_t max_candidate_pairs = 50000000;  // see header comment
+};
+
+PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& segments, const ArrangementOptions& options);
+
+}  // namespace rigidfold
