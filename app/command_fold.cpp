@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/summary_stream.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
@@ -13,6 +14,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
@@ -79,15 +81,20 @@ void add_fold_command(CLI::App& app) {
   cmd->add_option("--obj", a->obj, "also write the folded faces as OBJ");
   cmd->add_flag("--json", a->json, "print the report as JSON");
   cmd->callback([a] {
+    // Every path checked against the others before any work; both outputs committed together.
+    OutputSet outputs;
+    outputs.add_input("PATTERN", a->pattern);
+    outputs.add_input("--angles", a->angles);
+    outputs.add_output("--out", a->out);
+    if (!a->obj.empty()) outputs.add_output("--obj", a->obj);
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
     const CreasePattern p = read_fold(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     const Eigen::VectorXd rho = read_angles(a->angles, p, t);
     const FoldedGeometry g = place_faces(p, t, rho, reference_fold_angles(p, t));
-    // Render both outputs before writing either, so a failure leaves no partial result.
-    const std::string fold_text = write_fold_string(with_folded_frame(p, g, rho, "folded by rigidfold"));
-    const std::string obj_text = a->obj.empty() ? "" : folded_obj(p, g);
-    write_text_file_atomically(a->out, fold_text);
-    if (!a->obj.empty()) write_text_file_atomically(a->obj, obj_text);
+    outputs.stage(a->out, write_fold_string(with_folded_frame(p, g, rho, "folded by rigidfold")));
+    if (!a->obj.empty()) outputs.stage(a->obj, folded_obj(p, g));
+    outputs.commit();
     nlohmann::ordered_json j;
     j["pattern"] = a->pattern;
     j["out"] = a->out;

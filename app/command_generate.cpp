@@ -12,6 +12,7 @@
 #include <set>
 
 #include "app/commands.hpp"
+#include "app/summary_stream.hpp"
 #include "data/generators/bundled_examples.hpp"
 #include "data/generators/double_corrugated.hpp"
 #include "data/generators/generator_common.hpp"
@@ -24,6 +25,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
+#include "kernel/pattern/output_set.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -239,18 +241,24 @@ void run(const GenerateOptions& o, CLI::App& sub) {
   if (o.kind == "bundle") {
     if (given("--out")) throw InputError("--out", "bundle writes several files: use --out-dir DIR");
     if (o.out_dir.empty()) throw InputError("--out-dir", "is required for 'bundle'");
-    std::error_code ec;
-    std::filesystem::create_directories(o.out_dir, ec);
-    if (ec) throw InputError("--out-dir", "cannot create directory '" + o.out_dir + "': " + ec.message());
-    for (const auto& [name, pattern] : gen::bundled_examples()) {
+    // Every file staged, then all committed: a failure leaves the directory as it was.
+    OutputSet outputs;
+    outputs.add_output_directory("--out-dir", o.out_dir);
+    const auto examples = gen::bundled_examples();
+    for (const auto& [name, pattern] : examples) {
       const std::string path = (std::filesystem::path(o.out_dir) / (name + ".fold")).string();
-      write_fold(pattern, path);
-      report(path, pattern);
+      outputs.add_output("--out-dir", path);
+      outputs.stage(path, write_fold_string(pattern));
     }
+    outputs.commit();
+    for (const auto& [name, pattern] : examples) report((std::filesystem::path(o.out_dir) / (name + ".fold")).string(), pattern);
     return;
   }
   if (given("--out-dir")) throw InputError("--out-dir", "applies only to 'bundle'; use --out FILE.fold");
   if (o.out.empty()) throw InputError("--out", "is required (the .fold file to write)");
+  OutputSet outputs;
+  outputs.add_output("--out", o.out);
+  const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
 
   check_size(o);
   CreasePattern pattern;
@@ -261,7 +269,8 @@ void run(const GenerateOptions& o, CLI::App& sub) {
   else if (o.kind == "waterbomb") pattern = make_waterbomb(o);
   else if (o.kind == "corrugated-p") pattern = make_corrugated(o, gen::CorrugatedUnit::P, given("--assignment"), given("--odd"));
   else pattern = make_corrugated(o, gen::CorrugatedUnit::Q, given("--assignment"), given("--odd"));
-  write_fold(pattern, o.out);
+  outputs.stage(o.out, write_fold_string(pattern));
+  outputs.commit();
   report(o.out, pattern);
 }
 

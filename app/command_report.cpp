@@ -6,6 +6,7 @@
 //   - where the file carries fold angles, the folded state (faces placed by spanning tree)
 //     and its closure mismatch; the folded state is written to OUTDIR for the figures.
 // Writes OUTDIR/report.json and OUTDIR/REPORT.md; python/plot_report.py draws the figures.
+// OUTDIR must not be DIR, and no output may be one of the patterns (exit 2, nothing written).
 //   - the rigid-foldability verdict (rigidfold check) with and without the assignment.
 #include <chrono>
 #include <cmath>
@@ -24,6 +25,7 @@
 #include "kernel/pattern/flat_foldability.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
@@ -44,7 +46,9 @@ std::string title_of(const CreasePattern& p, const fs::path& file) {
   return file.stem().string();
 }
 
-Json analyse(const fs::path& file, const fs::path& out_dir) {
+// The folded state of `file`, if it carries fold angles, is staged in `outputs` (declared
+// by the caller as out_dir/STEM.folded.fold).
+Json analyse(const fs::path& file, const fs::path& out_dir, OutputSet& outputs) {
   const auto start = std::chrono::steady_clock::now();
   const CreasePattern p = read_fold(file.string());
   const Topology t = build_topology(p, file.string());
@@ -102,7 +106,7 @@ Json analyse(const fs::path& file, const fs::path& out_dir) {
     const Eigen::VectorXd rho = stored_fold_angles(p);
     const FoldedGeometry g = place_faces(p, t, rho, reference_fold_angles(p, t));
     const fs::path folded = out_dir / (file.stem().string() + ".folded.fold");
-    write_fold(with_folded_frame(p, g, rho, "folded by rigidfold report"), folded.string());
+    outputs.stage(folded.string(), write_fold_string(with_folded_frame(p, g, rho, "folded by rigidfold report")));
     j["folded_file"] = folded.string();
     j["closure_mismatch"] = g.max_mismatch;
     j["relative_closure_mismatch"] = g.relative_mismatch();
@@ -151,22 +155,30 @@ void add_report_command(CLI::App& app) {
       if (e.path().extension() == ".fold") files.push_back(e.path());
     std::sort(files.begin(), files.end());
     if (files.empty()) throw InputError(*dir, "no .fold files");
-    std::error_code ec;
-    fs::create_directories(*out, ec);
-    if (ec) throw InputError(*out, "cannot create directory: " + ec.message());
+    // Every output checked against every input before any work (--out may not be DIR: the
+    // next run would read this run's outputs as patterns), then committed together.
+    OutputSet outputs;
+    outputs.add_input("DIR", *dir);
+    for (const auto& f : files) outputs.add_input("DIR", f.string());
+    outputs.add_output_directory("--out", *out);
+    for (const auto& f : files) outputs.add_output("--out", (fs::path(*out) / (f.stem().string() + ".folded.fold")).string());
+    const std::string json_path = (fs::path(*out) / "report.json").string(), md_path = (fs::path(*out) / "REPORT.md").string();
+    outputs.add_output("--out", json_path);
+    outputs.add_output("--out", md_path);
     Json report;
     report["input"] = *dir;
     report["patterns"] = Json::array();
     for (const auto& f : files) {
-      report["patterns"].push_back(analyse(f, *out));
+      report["patterns"].push_back(analyse(f, *out, outputs));
       const auto& j = report["patterns"].back();
       std::cout << j["name"].get<std::string>() << ": " << j["check"]["verdict_class"].get<std::string>() << " (" << j["check"]["model"].get<std::string>()
                 << "); " << j["local_verdict"].get<std::string>();
       if (j.contains("relative_closure_mismatch")) std::cout << "; folded state closure mismatch " << j["relative_closure_mismatch"].get<double>();
       std::cout << "\n";
     }
-    write_text_file_atomically((fs::path(*out) / "report.json").string(), report.dump(2) + "\n");
-    write_text_file_atomically((fs::path(*out) / "REPORT.md").string(), markdown(report));
+    outputs.stage(json_path, report.dump(2) + "\n");
+    outputs.stage(md_path, markdown(report));
+    outputs.commit();
   });
 }
 

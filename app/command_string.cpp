@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/summary_stream.hpp"
 #include "design/strings/miura_string.hpp"
 #include "design/strings/string_fit_ceres.hpp"
 #include "design/strings/string_fit_nlopt.hpp"
@@ -66,6 +67,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/output_set.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -335,6 +337,12 @@ std::string forward_text(const MiuraString& s, const StringState& st, const Fold
 }
 
 void run_forward(const ForwardArgs& fa) {
+  // Every path checked against the others before any work; the outputs committed together.
+  OutputSet outputs;
+  outputs.add_input("SPEC", fa.spec);
+  if (!fa.out.empty()) outputs.add_output("--out", fa.out);
+  if (!fa.svg.empty()) outputs.add_output("--svg", fa.svg);
+  const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
   Reader r(fa.spec);
   const std::string mode = r.string_of(r.doc(), "mode", "transmitted", {"transmitted", "independent"});
   MiuraString s;
@@ -350,11 +358,12 @@ void run_forward(const ForwardArgs& fa) {
   j["width"] = s.width;
   j["placement_mismatch"] = folded.max_mismatch;
   if (!fa.out.empty()) {
-    write_text_file_atomically(fa.out, folded_fold_text(pattern, folded, st.edge_fold_angles, "string folded at theta = " +
-                                                                                                std::to_string(fa.theta) + " deg"));
+    outputs.stage(fa.out, folded_fold_text(pattern, folded, st.edge_fold_angles, "string folded at theta = " +
+                                                                                     std::to_string(fa.theta) + " deg"));
     j["out"] = fa.out;
   }
-  if (!fa.svg.empty()) write_text_file_atomically(fa.svg, string_pattern_svg(pattern));
+  if (!fa.svg.empty()) outputs.stage(fa.svg, string_pattern_svg(pattern));
+  outputs.commit();
   print_or_json(j, fa.json, forward_text(s, st, folded, j, mode, fa.out));
 }
 
@@ -630,6 +639,12 @@ std::string design_text(const std::string& kind, const DesignedString& d, const 
 }
 
 void run_design(const DesignArgs& da) {
+  // Every path checked against the others before any work; the outputs committed together.
+  OutputSet outputs;
+  outputs.add_input("TARGET", da.target);
+  outputs.add_output("--out", da.out);
+  if (!da.svg.empty()) outputs.add_output("--svg", da.svg);
+  const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
   // Step 1: the target's kind and the settings every kind shares.
   Reader r(da.target);
   const std::string kind = r.string_of(r.doc(), "kind", "", {"deflections", "trajectories", "curve"});
@@ -663,8 +678,9 @@ void run_design(const DesignArgs& da) {
     j["string"]["alpha2_deg"].push_back(to_degrees(s.alpha2[i]));
   }
   j["verification"] = verification_json(v, d);
-  write_text_file_atomically(da.out, folded_fold_text(pattern, v.folded, v.solver_angles, "designed origami string"));
-  if (!da.svg.empty()) write_text_file_atomically(da.svg, string_pattern_svg(pattern));
+  outputs.stage(da.out, folded_fold_text(pattern, v.folded, v.solver_angles, "designed origami string"));
+  if (!da.svg.empty()) outputs.stage(da.svg, string_pattern_svg(pattern));
+  outputs.commit();
   j["out"] = da.out;
   print_or_json(j, da.json, design_text(kind, d, v, j, da.out));
 }

@@ -10,7 +10,8 @@
 //     projection from a small fold of the driving crease (held), 1-DOF pseudo-arclength
 //     continuation to the target, then at every driving angle a projection with the driving
 //     crease held. One branch (id 0). If the DOF at the start is not 1, it says so and
-//     traces nothing (exit 0). With --branch ID|all: every branch through the flat state and
+//     traces nothing (exit 0; 3 if --out or --csv was asked). With --branch ID|all: every
+//     branch through the flat state and
 //     the bifurcations (kernel/analysis/branch_explorer.hpp), each traced to its end, steps at
 //     the continuation's points; --to / --steps / --drive do not apply there.
 //   - a sheet with holes (a tube): the two branches through its given 3D state, traced with
@@ -19,20 +20,25 @@
 //     --drive do not apply.
 //   - applicable but not foldable (for the assignment, or in any mode with
 //     --ignore-assignment): nothing to trace; the obstruction is reported (exit 0).
+//   Nothing traced while --out or --csv was asked for: exit 3 (no answer within tolerance),
+//   each branch's reason and residual on stderr, no file written.
 // Per step: every fold angle, the largest vertex-closure residual |log R_v| (rad), the
 // face-placement closure mismatch (length units), and events:
 //   "interference:eK"  crease K reaches +-180 deg (local interference limit);
 //   "mv_switch:eK"     M/V crease K changes sign against its letter: starts folding against
 //                      it (also at step 1 if it starts so) or returns to it;
 //   "sign_change:eK"   U crease K changes sign.
-// Outputs (all rendered before any is written; each written atomically):
+// Outputs (kernel/pattern/output_set.hpp: paths checked against the pattern and each other
+// before the work, all rendered and staged, then committed together):
 //   --out  FOLD: the pattern as key frame plus one foldedForm frame per step;
 //   --csv  step,drive_deg,max_residual_rad,mismatch,events,e0_deg,e1_deg,...
-//   With several branches (--branch all) each file gets ".b<ID>" before its extension.
+//   With several branches (--branch all) each file gets ".b<ID>" before its extension; a
+//   stream (-, /dev/null, a FIFO) gets every branch in turn.
 // Bad flags (--drive out of range / not a foldable crease / flat in the family, |--to| > 180
 // or 0, --steps < 1, unknown branch) exit 2 naming the flag; no file is written.
 // The motion itself comes from the kernel (kernel/analysis/trace_motion.hpp); this file
 // parses the flags, renders the outputs and prints.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +46,7 @@
 #include <optional>
 
 #include "app/commands.hpp"
+#include "app/summary_stream.hpp"
 #include "kernel/analysis/trace_motion.hpp"
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -47,6 +54,8 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
@@ -166,6 +175,18 @@ MotionTrace trace_with_flag_names(const CreasePattern& p, const Topology& t, con
   }
 }
 
+// Why nothing was traced, branch by branch, with the residual each reached.
+std::string nothing_traced_text(const MotionTrace& m) {
+  std::string s = "nothing traced, so no --out/--csv written";
+  if (!m.note.empty()) s += "; " + m.note;
+  for (const MotionBranch& b : m.branches) {
+    s += "; branch " + std::to_string(b.id) + ": " + (b.message.empty() ? std::string(to_string(b.stop)) : b.message);
+    s += " (max closure residual " + round_trip_text(b.max_residual) + " rad)";
+  }
+  if (m.branches.empty()) s += "; no branch";
+  return s;
+}
+
 void print_text(const std::string& file, const MotionTrace& m, const std::vector<std::pair<std::string, std::string>>& files) {
   std::cout << file << ": model " << m.model_name << "\n";
   if (!m.note.empty()) std::cout << "  " << m.note << "\n";
@@ -209,6 +230,12 @@ void add_trace_command(CLI::App& app) {
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--general", a->general, "force the general loop-closure solver");
   cmd->callback([a] {
+    // Every path checked against the others before any work; all outputs committed together.
+    OutputSet outputs;
+    outputs.add_input("PATTERN", a->pattern);
+    if (!a->out.empty()) outputs.add_output("--out", a->out);
+    if (!a->csv.empty()) outputs.add_output("--csv", a->csv);
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
     const CreasePattern p = read_fold(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     check_steps(a->steps, p);
@@ -224,15 +251,29 @@ void add_trace_command(CLI::App& app) {
     rq.steps = a->steps;
     const MotionTrace m = trace_with_flag_names(p, t, rq, a->pattern);
 
-    // Render every output before writing any.
+    // Files were asked for and no branch was traced: no answer (exit 3), nothing written.
+    const bool wants_files = !a->out.empty() || !a->csv.empty();
+    if (wants_files && std::none_of(m.branches.begin(), m.branches.end(), [](const MotionBranch& b) { return b.traced; }))
+      throw NoAnswerError(nothing_traced_text(m));
+    // Several branches: one file each (".b<ID>", declared and checked now), or, for a stream
+    // target (-, a device, a FIFO), every branch in turn. Committed once all are rendered.
     const bool several = m.branches.size() > 1;
-    std::vector<std::pair<std::string, std::string>> files;
+    std::vector<std::pair<std::string, std::string>> files;  // (path, flag) in the order written
     for (const MotionBranch& b : m.branches) {
       if (!b.traced) continue;
-      if (!a->out.empty()) files.emplace_back(branch_path(a->out, b.id, several), frames_text(b, p));
-      if (!a->csv.empty()) files.emplace_back(branch_path(a->csv, b.id, several), csv_text(b, p.num_edges()));
+      for (const auto& [flag, base] : {std::pair<std::string, std::string>{"--out", a->out}, {"--csv", a->csv}}) {
+        if (base.empty()) continue;
+        std::string path = base;
+        if (several && !outputs.writes_in_place(base)) {
+          path = branch_path(base, b.id, true);
+          outputs.add_output(flag, path);
+        }
+        outputs.stage(path, flag == "--out" ? frames_text(b, p) : csv_text(b, p.num_edges()));
+        if (std::find_if(files.begin(), files.end(), [&](const auto& f) { return f.first == path; }) == files.end())
+          files.emplace_back(path, flag);
+      }
     }
-    for (const auto& [path, text] : files) write_text_file_atomically(path, text);
+    outputs.commit();
 
     Json j = {{"file", a->pattern}};
     j["assignment"] = a->ignore ? "ignored" : "as given (sign constraints)";

@@ -7,8 +7,9 @@
 namespace rigidfold::cli {
 
 // Builds the app with every subcommand, parses argv and runs the command. Returns the exit
-// status: 0 success, 2 bad input (CLI::ParseError, InputError, std::invalid_argument, and
-// std::bad_alloc: out of memory), 1 internal error (any other exception: a bug).
+// status: 0 success (every requested output exists), 2 bad input (CLI::ParseError,
+// InputError, std::invalid_argument, and std::bad_alloc: out of memory), 3 no answer within
+// tolerance (NoAnswerError: nothing written), 1 internal error (any other exception: a bug).
 int run_cli(int argc, const char* const* argv);
 
 void add_info_command(CLI::App& app);      // rigidfold info PATTERN.fold [--json]

@@ -3,6 +3,7 @@
 
 #include "app/commands.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
 
 namespace rigidfold::cli {
 
@@ -32,6 +33,10 @@ int run_cli(int argc, const char* const* argv) {
   } catch (const InputError& e) {
     std::cerr << "rigidfold: error: " << e.what() << "\n";
     return 2;
+  } catch (const NoAnswerError& e) {
+    // The message states the residual it reached; no output was written.
+    std::cerr << "rigidfold: no answer within tolerance: " << e.what() << "\n";
+    return 3;
   } catch (const std::invalid_argument& e) {
     std::cerr << "rigidfold: error: " << e.what() << "\n";
     return 2;

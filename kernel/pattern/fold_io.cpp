@@ -6,15 +6,10 @@
 #include <map>
 #include <cstdio>
 #include <numbers>
-#include <cerrno>
-#include <csignal>
-#include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold {
@@ -181,64 +176,51 @@ void read_fold_angles(const Json& doc, CreasePattern& p, const std::string& sour
   }
 }
 
+// file_frames (FOLD 1.2): an array of frame objects, file_frames[i] being frame i + 1 (frame
+// 0 is the file's key frame). A frame_parent is a frame index in [0, frames], not the frame
+// itself, and following parents ends (no cycle). Checked before any key is copied, so an
+// invalid structure is never written back out.
+void check_file_frames(const Json& frames, const std::string& source) {
+  if (!frames.is_array()) throw InputError(place(source, "file_frames"), "must be an array of frames, found " + std::string(frames.type_name()));
+  const std::size_t n = frames.size();
+  std::vector<long> parent(n + 1, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string path = "file_frames[" + std::to_string(i) + "]";
+    if (!frames[i].is_object()) throw InputError(place(source, path), "must be a frame object, found " + std::string(frames[i].type_name()));
+    const auto it = frames[i].find("frame_parent");
+    if (it == frames[i].end()) continue;
+    const std::string ppath = path + ".frame_parent";
+    const long parent_index = index_value(*it, source, ppath);
+    if (static_cast<std::size_t>(parent_index) > n)
+      throw InputError(place(source, ppath), "frame " + std::to_string(parent_index) + " out of range (frames 0.." + std::to_string(n) +
+                                                 ": 0 is the key frame, file_frames[i] is frame i + 1)");
+    if (static_cast<std::size_t>(parent_index) == i + 1) throw InputError(place(source, ppath), "a frame cannot be its own parent");
+    parent[i + 1] = parent_index;
+  }
+  // Walk each chain of parents once: 1 = on the chain being walked, 2 = known to end.
+  std::vector<char> state(n + 1, 0);
+  for (std::size_t start = 1; start <= n; ++start) {
+    long f = static_cast<long>(start);
+    while (f >= 0 && state[f] == 0) {
+      state[f] = 1;
+      f = parent[f];
+    }
+    if (f >= 0 && state[f] == 1)
+      throw InputError(place(source, "file_frames[" + std::to_string(f - 1) + "].frame_parent"),
+                       "frame parents form a cycle through frame " + std::to_string(f));
+    for (long g = static_cast<long>(start); g >= 0 && state[g] == 1; g = parent[g]) state[g] = 2;
+  }
+}
+
 }  // namespace
 
 std::string read_text_file(const std::string& path) { return read_input_file(path); }
 
-namespace {
-
-// The temporary file being written, for remove_pending_output_file (a signal handler): a
-// fixed buffer and a flag, both safe to read from a handler.
-char g_pending_path[4096];
-volatile std::sig_atomic_t g_pending = 0;
-
-// Writes all of text to fd; false on any error.
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-}  // namespace
-
-void remove_pending_output_file() {
-  if (g_pending) ::unlink(g_pending_path);
-}
-
 void write_text_file_atomically(const std::string& path, const std::string& text) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-    throw InputError(path, "exists and is not a regular file; refusing to replace it");
-  static int counter = 0;
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-  if (tmp.size() >= sizeof g_pending_path) throw InputError(path, "output path is too long");
-  std::memcpy(g_pending_path, tmp.c_str(), tmp.size() + 1);
-  g_pending = 1;
-  // O_EXCL: never write through a file or link that is already there under the temporary name.
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) {
-    g_pending = 0;
-    throw InputError(path, std::string("cannot write file: ") + std::strerror(errno));
-  }
-  const bool written = write_all(fd, text);
-  const bool closed = ::close(fd) == 0;
-  if (!written || !closed) {
-    ::unlink(tmp.c_str());
-    g_pending = 0;
-    throw InputError(path, std::string("write failed: ") + std::strerror(errno));
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    g_pending = 0;
-    throw InputError(path, std::string("cannot rename temporary file into place: ") + std::strerror(err));
-  }
-  g_pending = 0;
+  OutputSet out;
+  out.add_output("", path);
+  out.stage(path, text);
+  out.commit();
 }
 
 CreasePattern parse_fold(const std::string& text, const std::string& source) {
@@ -246,11 +228,10 @@ CreasePattern parse_fold(const std::string& text, const std::string& source) {
   const Json doc = parse_ordered_json_input(text, source);
   if (!doc.is_object()) throw InputError(source, "top level must be a JSON object, found " + std::string(doc.type_name()));
 
+  if (const auto frames = doc.find("file_frames"); frames != doc.end()) check_file_frames(*frames, source);
   CreasePattern p;
   for (auto it = doc.begin(); it != doc.end(); ++it)
     if (!is_modelled_key(it.key())) p.extra[it.key()] = it.value();
-  if (p.extra.contains("file_frames") && !p.extra["file_frames"].is_array())
-    throw InputError(place(source, "file_frames"), "must be an array of frames");
 
   read_vertices(doc, p, source);
   read_edges(doc, p, source);
@@ -292,8 +273,13 @@ nlohmann::ordered_json fold_to_json(const CreasePattern& p) {
   for (const auto& a : p.fold_angles) any_angle = any_angle || a.has_value();
   if (any_angle || p.fold_angles_in_file) {
     Json angles = Json::array();
-    for (const auto& a : p.fold_angles) {
+    for (std::size_t e = 0; e < p.fold_angles.size(); ++e) {
+      const auto& a = p.fold_angles[e];
+      const Assignment letter = e < p.assignments.size() ? p.assignments[e] : Assignment::Unassigned;
+      // FOLD 1.2 has numbers only: a boundary, flat or join edge has fold angle 0. A crease
+      // whose angle the input left out (null) stays null, as read.
       if (a) angles.push_back(*a * kDegreesPerRadian);
+      else if (letter == Assignment::Boundary || letter == Assignment::Flat || letter == Assignment::Join) angles.push_back(0.0);
       else angles.push_back(nullptr);
     }
     doc["edges_foldAngle"] = std::move(angles);

@@ -9,6 +9,7 @@
 // write_fold: the inverse. Unknown keys (extra) are written back unchanged; fold angles in
 // degrees; numbers print with the shortest text that reads back to the same double.
 // Files are written to a temporary name and renamed, so a failure leaves no partial file.
+// The CLI writes through an OutputSet instead, to commit all outputs of a command together.
 #include <string>
 
 #include "kernel/pattern/crease_pattern.hpp"
@@ -28,13 +29,9 @@ void write_fold(const CreasePattern& pattern, const std::string& path);
 // Reads a whole regular file within the input limits (json_input.hpp: read_input_file);
 // throws InputError(path, ...) if it cannot be read, is not a regular file or is too large.
 std::string read_text_file(const std::string& path);
-// Writes via "<path>.tmp.<pid>.<n>" (created exclusively) then rename, so readers see the
-// old file or the whole new one; throws InputError(path, ...) on failure, and refuses to
-// replace anything but a regular file (a device such as /dev/null, a FIFO, a directory).
+// Writes one file through an OutputSet (output_set.hpp): a temporary in the destination
+// directory renamed into place, so readers see the old file or the whole new one; a device
+// or FIFO is written in place; throws InputError(path, ...) on failure.
 void write_text_file_atomically(const std::string& path, const std::string& text);
-// Removes the temporary file of a write in progress, if any. Async-signal-safe: the CLI's
-// SIGINT/SIGTERM handler calls it, so an interrupted write leaves the old file, no partial
-// one and no temporary.
-void remove_pending_output_file();
 
 }  // namespace rigidfold

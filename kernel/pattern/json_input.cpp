@@ -1,6 +1,8 @@
 #include "kernel/pattern/json_input.hpp"
 
 #include <algorithm>
+#include <unordered_set>
+#include <vector>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -34,6 +36,10 @@ std::string mib(std::uintmax_t bytes) { return std::to_string(bytes >> 20) + " M
 
 // Thrown when the nesting passes the limit; carries nothing, the caller words the message.
 struct TooDeep {};
+// Thrown at the second occurrence of a key in one object; path names it ("a[2].b").
+struct DuplicateKey {
+  std::string path, key;
+};
 
 // SAX handler: nlohmann's own DOM builder, with a depth count on every array and object
 // start. (Not a parser callback: nlohmann 3.11's callback parser rescans the parent array
@@ -48,28 +54,37 @@ class DepthLimitedDom {
   using binary_t = typename Json::binary_t;
 
   explicit DepthLimitedDom(Json& root) : dom_(root, true) {}
-  bool null() { return dom_.null(); }
-  bool boolean(bool v) { return dom_.boolean(v); }
-  bool number_integer(number_integer_t v) { return dom_.number_integer(v); }
-  bool number_unsigned(number_unsigned_t v) { return dom_.number_unsigned(v); }
-  bool number_float(number_float_t v, const string_t& text) { return dom_.number_float(v, text); }
-  bool string(string_t& v) { return dom_.string(v); }
-  bool binary(binary_t& v) { return dom_.binary(v); }
-  bool key(string_t& v) { return dom_.key(v); }
+  bool null() { return value(), dom_.null(); }
+  bool boolean(bool v) { return value(), dom_.boolean(v); }
+  bool number_integer(number_integer_t v) { return value(), dom_.number_integer(v); }
+  bool number_unsigned(number_unsigned_t v) { return value(), dom_.number_unsigned(v); }
+  bool number_float(number_float_t v, const string_t& text) { return value(), dom_.number_float(v, text); }
+  bool string(string_t& v) { return value(), dom_.string(v); }
+  bool binary(binary_t& v) { return value(), dom_.binary(v); }
+  bool key(string_t& v) {
+    // JSON allows a key twice in one object, but which value is meant is then ambiguous
+    // (nlohmann keeps the last): refused, like a syntax error.
+    Level& top = levels_.back();
+    if (!top.keys.insert(v).second) throw DuplicateKey{path_to(v), v};
+    top.key = v;
+    return dom_.key(v);
+  }
   bool start_object(std::size_t n) {
-    enter();
+    value();
+    enter(false);
     return dom_.start_object(n);
   }
   bool end_object() {
-    --depth_;
+    leave();
     return dom_.end_object();
   }
   bool start_array(std::size_t n) {
-    enter();
+    value();
+    enter(true);
     return dom_.start_array(n);
   }
   bool end_array() {
-    --depth_;
+    leave();
     return dom_.end_array();
   }
   template <class Exception>
@@ -78,11 +93,37 @@ class DepthLimitedDom {
   }
 
  private:
-  void enter() {
-    if (++depth_ > kMaxJsonDepth) throw TooDeep{};
+  // One open array or object: the index of its current element, or its current key and the
+  // keys seen so far.
+  struct Level {
+    bool array = false;
+    std::size_t count = 0;
+    std::string key;
+    std::unordered_set<std::string> keys;
+  };
+  void value() {
+    if (!levels_.empty() && levels_.back().array) ++levels_.back().count;
+  }
+  void enter(bool array) {
+    if (static_cast<int>(levels_.size()) + 1 > kMaxJsonDepth) throw TooDeep{};
+    levels_.push_back(Level{array, 0, {}, {}});
+  }
+  void leave() { levels_.pop_back(); }
+  std::string path_to(const std::string& key) const {
+    std::string path;
+    for (std::size_t i = 0; i < levels_.size(); ++i) {
+      const Level& l = levels_[i];
+      if (l.array) {
+        path += "[" + std::to_string(l.count - 1) + "]";
+      } else {
+        if (!path.empty()) path += ".";
+        path += i + 1 == levels_.size() ? key : l.key;
+      }
+    }
+    return path;
   }
   nlohmann::detail::json_sax_dom_parser<Json> dom_;
-  int depth_ = 0;
+  std::vector<Level> levels_;
 };
 
 template <class Json>
@@ -91,6 +132,8 @@ Json parse_limited(const std::string& text, const std::string& source) {
   DepthLimitedDom<Json> sax(doc);
   try {
     Json::sax_parse(text, &sax);
+  } catch (const DuplicateKey& d) {
+    throw InputError(source + ": " + d.path, "duplicate key \"" + d.key + "\" (JSON leaves which value is meant ambiguous)");
   } catch (const TooDeep&) {
     throw InputError(source, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                                  " arrays/objects (the limit for every input file)");

@@ -9,7 +9,8 @@
 // parse_json_input: JSON text -> document. Throws InputError(source, ...) for malformed
 //   JSON (with the byte offset), a number that does not fit a double (1e999), and arrays or
 //   objects nested deeper than kMaxJsonDepth (refused while parsing, at the byte where the
-//   limit is passed). Never lets a nlohmann::json exception escape.
+//   limit is passed), and a key given twice in one object (InputError(source + ": " + path),
+//   e.g. "a.fold: file_frames[0].frame_title"). Never lets a nlohmann::json exception escape.
 #include <nlohmann/json.hpp>
 #include <string>
 
