@@ -263,11 +263,16 @@ TEST(TraceCli, NotOneDofSaysSo) {
   m.perturbation = 0.05;
   const std::string in = dir.file("perturbed.fold"), out = dir.file("frames.fold");
   write_fold(generators::miura_ori(m), in);
-  const auto j = run_json(in + " --out " + out);
+  const auto j = run_json(in);
   ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j["model"], "general loop-closure solver");
   EXPECT_EQ(j["traced"], false);
   EXPECT_FALSE(j["message"].get<std::string>().empty());
+  // With --out asked for, nothing traced is no answer (exit 3), the reason on stderr, no file.
+  const auto r = test::run_command(test::cli() + " trace " + in + " --out " + out);
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("no answer within tolerance: nothing traced"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(j["message"].get<std::string>()), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
