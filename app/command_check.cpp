@@ -8,6 +8,7 @@
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -47,12 +48,12 @@ void add_check_command(CLI::App& app) {
     bool ignore = false, json = false, general = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("pattern", a->pattern, "crease pattern (.fold)")->required();
+  cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->add_flag("--general", a->general, "force the general loop-closure solver (skip multiplier propagation)");
   cmd->callback([a] {
-    const CreasePattern p = read_fold(a->pattern);
+    const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     FoldabilityOptions options;
     options.use_assignment = !a->ignore;

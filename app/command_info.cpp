@@ -9,6 +9,7 @@
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/flat_foldability.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
@@ -121,12 +122,12 @@ void add_info_command(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   auto tol = std::make_shared<double>(1e-7);
-  cmd->add_option("pattern", *path, "crease pattern (.fold)")->required();
+  cmd->add_option("pattern", *path, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
   cmd->add_flag("--json", *json, "print one JSON object");
   cmd->add_option("--tolerance-deg", *tol, "tolerance of the Kawasaki and developability checks, degrees (files with float32 or 6-digit coordinates need ~1e-3)")
       ->check(CLI::PositiveNumber);
   cmd->callback([path, json, tol] {
-    const CreasePattern p = read_fold(*path);
+    const CreasePattern p = read_pattern(*path);
     const Topology t = build_topology(p, *path);
     const auto j = info_json(*path, p, t, *tol);
     if (*json) std::cout << j.dump(2) << "\n";

@@ -52,6 +52,7 @@
 #include "kernel/math/angle_units.hpp"
 #include "kernel/math/number_text.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
@@ -219,7 +220,7 @@ void add_trace_command(CLI::App& app) {
     bool json = false, ignore = false, general = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("pattern", a->pattern, "crease pattern (.fold)")->required();
+  cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
   cmd->add_option("--branch", a->branch, "branch id (multiplier model: one per family component) or 'all'");
   cmd->add_option("--drive", a->drive, "driving crease (edge index); default: largest multiplier of the branch");
   cmd->add_option("--to", a->to, "final fold of the driving crease, deg in [-180, 180], not 0; default 170 in its assigned direction");
@@ -236,7 +237,7 @@ void add_trace_command(CLI::App& app) {
     if (!a->out.empty()) outputs.add_output("--out", a->out);
     if (!a->csv.empty()) outputs.add_output("--csv", a->csv);
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
-    const CreasePattern p = read_fold(a->pattern);
+    const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     check_steps(a->steps, p);
     if (a->to && (!std::isfinite(*a->to) || std::fabs(*a->to) > 180.0))

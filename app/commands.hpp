@@ -20,5 +20,6 @@ void add_generate_command(CLI::App& app);  // rigidfold generate KIND ... --out 
 void add_report_command(CLI::App& app);    // rigidfold report DIR --out OUTDIR (main job)
 void add_trace_command(CLI::App& app);
 void add_string_command(CLI::App& app);   // rigidfold string forward|design ... (origami strings)
+void add_import_command(CLI::App& app);   // rigidfold import CP.svg --out CP.fold (SVG crease pattern -> FOLD)
 
 }  // namespace rigidfold::cli

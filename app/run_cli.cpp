@@ -19,6 +19,7 @@ int run_cli(int argc, const char* const* argv) {
   add_report_command(app);
   add_trace_command(app);
   add_string_command(app);
+  add_import_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -134,10 +134,19 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
     const double len = d.norm();
     const double t = (pts[p] - a).dot(d) / (len * len);
     const double tc = std::clamp(t, 0.0, 1.0);
-    if ((a + tc * d - pts[p]).norm() > tol) return false;
-    if (tc * len <= tol) unions.emplace_back(p, 2 * k);
-    else if ((1 - tc) * len <= tol) unions.emplace_back(p, 2 * k + 1);
-    else splits[k].emplace_back(tc, p);
+    const double gap = (a + tc * d - pts[p]).norm();
+    if (gap > tol) return false;
+    if (tc * len <= tol) {
+      unions.emplace_back(p, 2 * k);
+    } else if ((1 - tc) * len <= tol) {
+      unions.emplace_back(p, 2 * k + 1);
+    } else {
+      splits[k].emplace_back(tc, p);  // k now bends through p: a point moved by `gap`
+      if (gap > 0) {
+        ++out.merged_points;
+        out.max_merge_distance = std::max(out.max_merge_distance, gap);
+      }
+    }
     return true;
   };
 

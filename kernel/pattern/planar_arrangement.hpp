@@ -41,8 +41,9 @@ struct PlanarArrangement {
   std::vector<int> edge_source;
   int crossings = 0;             // points where two segments cross inside both
   int touches = 0;               // segment ends lying on another segment (T-junctions, overlaps)
-  int merged_points = 0;         // input/derived points merged into another (distinct coordinates only)
-  double max_merge_distance = 0;  // largest distance from a merged point to its vertex
+  int merged_points = 0;         // points merged into another (distinct coordinates only), and
+                                 // line ends near (not on) another line that now bends through them
+  double max_merge_distance = 0;  // largest distance a point or line moved
   int zero_length_segments = 0;  // dropped: shorter than the tolerance
   int duplicate_edges = 0;       // drawn more than once with the same label
   int collinear_vertices_removed = 0;

@@ -1,0 +1,97 @@
+// `rigidfold import CP.svg --out CP.fold`, and info/check/trace reading .svg directly: the
+// written FOLD reads back with the counts the import printed; bad SVGs exit 2 with one line
+// naming the file and the element.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "tests/support/run_command.hpp"
+
+namespace rigidfold {
+namespace {
+
+std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
+
+class ImportCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / ("rigidfold_import_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string file(const std::string& name, const std::string& text = "") {
+    const auto p = (dir_ / name).string();
+    if (!text.empty()) std::ofstream(p) << text;
+    return p;
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(ImportCli, WritesAFoldThatReadsBackWithThePrintedCounts) {
+  if (!std::filesystem::exists(corpus("origami-simulator/waterbombBase.svg"))) GTEST_SKIP() << "no corpus";
+  const std::string out = file("wb.fold");
+  const auto r = test::run_command(test::cli() + " import " + corpus("origami-simulator/waterbombBase.svg") + " --out " + out + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const CreasePattern p = read_fold(out);
+  EXPECT_EQ(j["vertices"], p.num_vertices());
+  EXPECT_EQ(j["edges"], p.num_edges());
+  EXPECT_EQ(j["faces"], p.num_faces());
+  EXPECT_EQ(p.num_vertices(), 9);
+  EXPECT_EQ(p.num_faces(), 8);
+  EXPECT_EQ(j["euler_characteristic"], 1);
+  EXPECT_EQ(j["edges_by_assignment"]["M"], 4);
+  EXPECT_EQ(j["edges_by_assignment"]["V"], 4);
+  EXPECT_EQ(j["edges_by_assignment"]["B"], 8);
+  EXPECT_DOUBLE_EQ(j["svg"]["merge_tolerance_relative"].get<double>(), 1e-4);
+  EXPECT_GT(j["svg"]["merge_tolerance"].get<double>(), 0.0);
+  EXPECT_EQ(j["svg"]["crossings_split"], 6);  // the six pairs of the four creases cross, all at the centre
+  // The tolerance flag is used and reported.
+  const auto r2 = test::run_command(test::cli() + " import " + corpus("origami-simulator/waterbombBase.svg") + " --out " + out +
+                                    " --merge-tolerance 1e-6 --json");
+  ASSERT_EQ(r2.status, 0) << r2.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(r2.out)["svg"]["merge_tolerance_relative"].get<double>(), 1e-6);
+}
+
+TEST_F(ImportCli, InfoCheckAndTraceReadSvgDirectly) {
+  const std::string svg = file("cross.svg",
+                               "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect width=\"10\" height=\"10\" stroke=\"#000\"/>"
+                               "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" stroke=\"#00f\"/></svg>");
+  const auto info = test::run_command(test::cli() + " info " + svg + " --json");
+  ASSERT_EQ(info.status, 0) << info.err;
+  const auto j = nlohmann::json::parse(info.out);
+  EXPECT_EQ(j["file"], svg);
+  const auto check = test::run_command(test::cli() + " check " + svg + " --json");
+  ASSERT_EQ(check.status, 0) << check.err;
+  EXPECT_EQ(nlohmann::json::parse(check.out)["rigidly_foldable"], true);  // one straight valley folds
+  const auto trace = test::run_command(test::cli() + " trace " + svg + " --steps 5 --json");
+  EXPECT_EQ(trace.status, 0) << trace.err;
+}
+
+TEST_F(ImportCli, BadSvgExitsTwoNamingTheElement) {
+  const std::string curve = file("curve.svg",
+                                 "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<rect width=\"10\" height=\"10\" stroke=\"#000\"/>\n"
+                                 "<path stroke=\"red\" d=\"M0 0 Q 5 5 10 10\"/>\n</svg>");
+  for (const std::string cmd : {" import " + curve + " --out " + file("x.fold"), " info " + curve, " check " + curve, " trace " + curve}) {
+    const auto r = test::run_command(test::cli() + cmd);
+    EXPECT_EQ(r.status, 2) << cmd << ": " << r.err;
+    EXPECT_NE(r.err.find("curve.svg: <path> #1 (line 3) d:"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "x.fold"));
+  const auto lol = test::run_command(test::cli() + " import " +
+                                     file("lol.svg", "<!DOCTYPE svg [<!ENTITY a \"aaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;\">]><svg>&b;</svg>") +
+                                     " --out " + file("y.fold"));
+  EXPECT_EQ(lol.status, 2) << lol.err;
+  EXPECT_NE(lol.err.find("lol.svg: line 1"), std::string::npos) << lol.err;
+  const auto flag = test::run_command(test::cli() + " import " + curve + " --out " + file("z.fold") + " --merge-tolerance 0.5");
+  EXPECT_EQ(flag.status, 2) << flag.err;
+  EXPECT_NE(flag.err.find("--merge-tolerance"), std::string::npos) << flag.err;
+}
+
+}  // namespace
+}  // namespace rigidfold

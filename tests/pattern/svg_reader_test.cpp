@@ -1,0 +1,413 @@
+// SVG crease patterns (kernel/pattern/svg_reader.hpp): Origami Simulator's own SVGs
+// (../shared/corpus/origami-simulator) import with their counts, letters and Euler
+// characteristic, agreeing with the FOLD versions of the same patterns where the corpus has
+// them; synthetic SVGs check each feature (transforms, path commands, colour forms,
+// crossings, merging, opacity -> fold angle); bad SVGs raise InputError naming the element.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <set>
+#include <string>
+
+#include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/input_limits.hpp"
+#include "kernel/pattern/read_pattern.hpp"
+#include "kernel/pattern/svg_reader.hpp"
+#include "kernel/pattern/topology.hpp"
+
+namespace rigidfold {
+namespace {
+
+std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
+
+std::map<char, int> letters(const CreasePattern& p) {
+  std::map<char, int> m;
+  for (Assignment a : p.assignments) ++m[assignment_letter(a)];
+  return m;
+}
+
+int euler(const Topology& t) {
+  int chi = 0;
+  for (const auto& c : t.components) chi += c.euler_characteristic;
+  return chi;
+}
+
+struct SvgCorpusFile {
+  const char* path;
+  int vertices, edges, faces, interior, components;
+  int b, m, v, f, u;  // edges per letter
+};
+
+// Counts as imported with the default merge tolerance; each was checked against the drawing
+// (see the comparisons with FOLD versions below for the ones the corpus also has as FOLD).
+const SvgCorpusFile kSvgFiles[] = {
+    {"origami-simulator/MoosersTrainRigid-Gardner.svg", 467, 950, 484, 340, 1, 127, 397, 426, 0, 0},
+    {"origami-simulator/huffmanWaterbomb.svg", 448, 1165, 718, 360, 1, 88, 758, 319, 0, 0},
+    {"origami-simulator/hypar.svg", 97, 283, 187, 93, 1, 4, 96, 88, 0, 95},
+    {"origami-simulator/miura-ori.svg", 182, 337, 156, 132, 1, 50, 137, 150, 0, 0},
+    {"origami-simulator/miura_sharpangle.svg", 325, 612, 288, 253, 1, 72, 282, 258, 0, 0},
+    {"origami-simulator/reschTriTessellation.svg", 243, 664, 422, 183, 1, 60, 451, 153, 0, 0},
+    {"origami-simulator/singlesquaretwist.svg", 16, 24, 9, 4, 1, 12, 4, 8, 0, 0},
+    {"origami-simulator/squaretwistManyAngles.svg", 144, 216, 81, 36, 9, 108, 36, 72, 0, 0},
+    {"origami-simulator/traditionalCrane.svg", 69, 142, 74, 55, 1, 14, 68, 50, 10, 0},
+    {"origami-simulator/waterbombBase.svg", 9, 16, 8, 1, 1, 8, 4, 4, 0, 0},
+};
+
+void PrintTo(const SvgCorpusFile& c, std::ostream* os) { *os << c.path; }
+
+class SvgCorpus : public ::testing::TestWithParam<SvgCorpusFile> {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(corpus(GetParam().path))) GTEST_SKIP() << "corpus not checked out beside the project";
+  }
+};
+
+TEST_P(SvgCorpus, ImportsAsDisksWithEveryColourDrawn) {
+  const auto& c = GetParam();
+  SvgImportSummary s;
+  const CreasePattern p = read_svg(corpus(c.path), {}, &s);
+  const Topology t = build_topology(p, c.path);
+  EXPECT_EQ(p.num_vertices(), c.vertices);
+  EXPECT_EQ(p.num_edges(), c.edges);
+  EXPECT_EQ(p.num_faces(), c.faces);
+  EXPECT_EQ(static_cast<int>(t.interior_vertices.size()), c.interior);
+  ASSERT_EQ(static_cast<int>(t.components.size()), c.components);
+  for (const auto& comp : t.components) {
+    EXPECT_EQ(comp.euler_characteristic, 1) << "each sheet is a disk";
+    EXPECT_EQ(comp.boundary_loops, 1);
+  }
+  EXPECT_EQ(euler(t), c.components);
+  EXPECT_EQ(p.num_vertices() - p.num_edges() + p.num_faces(), c.components);
+  auto l = letters(p);
+  EXPECT_EQ(l['B'], c.b);
+  EXPECT_EQ(l['M'], c.m);
+  EXPECT_EQ(l['V'], c.v);
+  EXPECT_EQ(l['F'], c.f);
+  EXPECT_EQ(l['U'], c.u);
+  // Every colour the file draws in is present among the edges, and nothing else.
+  for (int k = 0; k < 7; ++k) {
+    const char letter = assignment_letter(static_cast<Assignment>(k));
+    EXPECT_EQ(s.segments_by_letter[k] > 0, l[letter] > 0) << letter;
+  }
+  // The black lines are exactly the boundary: every B edge has one face, every crease two.
+  for (int e = 0; e < p.num_edges(); ++e) {
+    const int faces = (t.edge_faces[e][0] >= 0) + (t.edge_faces[e][1] >= 0);
+    EXPECT_EQ(faces, p.assignments[e] == Assignment::Boundary ? 1 : 2) << "edge " << e;
+  }
+  // The tolerance is reported relative to the drawing, and no point moved farther.
+  EXPECT_DOUBLE_EQ(s.merge_tolerance_relative, 1e-4);
+  EXPECT_NEAR(s.merge_tolerance, 1e-4 * s.pattern_size, 1e-12 * s.pattern_size);
+  EXPECT_LE(s.max_merge_distance, s.merge_tolerance);
+  EXPECT_EQ(read_pattern(corpus(c.path)).num_edges(), c.edges) << "read_pattern dispatches .svg";
+}
+
+INSTANTIATE_TEST_SUITE_P(All, SvgCorpus, ::testing::ValuesIn(kSvgFiles));
+
+TEST(SvgCorpusAgainstFold, SameCountsAsTheFoldVersionsOfThePatterns) {
+  if (!std::filesystem::exists(corpus("origami-simulator/waterbombBase.svg"))) GTEST_SKIP() << "no corpus";
+  // Origami Simulator's waterbomb base and square twist against the FOLD files of the same
+  // patterns from two other projects (rigid-origami, the FOLD spec's examples).
+  for (auto [svg, fold] : {std::pair{"origami-simulator/waterbombBase.svg", "rigid-origami/waterbombBase.fold"},
+                           {"origami-simulator/singlesquaretwist.svg", "fold-spec/squaretwist.fold"}}) {
+    const CreasePattern a = read_svg(corpus(svg)), b = read_fold(corpus(fold));
+    EXPECT_EQ(a.num_vertices(), b.num_vertices()) << svg;
+    EXPECT_EQ(a.num_edges(), b.num_edges()) << svg;
+    EXPECT_EQ(a.num_faces(), b.num_faces()) << svg;
+    EXPECT_EQ(build_topology(a).interior_vertices.size(), build_topology(b).interior_vertices.size()) << svg;
+  }
+  // Huffman's waterbomb tessellation: the FOLD is triangulated, the SVG is not, but both
+  // have the same 360 interior vertices.
+  EXPECT_EQ(build_topology(read_svg(corpus("origami-simulator/huffmanWaterbomb.svg"))).interior_vertices.size(),
+            build_topology(read_fold(corpus("rigid-origami/huffmanWaterbomb.fold"))).interior_vertices.size());
+}
+
+TEST(SvgCorpusAgainstFold, OpacityIsTheTargetFoldAngle) {
+  if (!std::filesystem::exists(corpus("origami-simulator/waterbombBase.svg"))) GTEST_SKIP() << "no corpus";
+  // waterbombBase.svg: red diagonals at full opacity, blue midlines at opacity 0.5.
+  const CreasePattern p = read_svg(corpus("origami-simulator/waterbombBase.svg"));
+  for (int e = 0; e < p.num_edges(); ++e) {
+    if (p.assignments[e] == Assignment::Mountain) EXPECT_DOUBLE_EQ(*p.fold_angles[e], -std::numbers::pi);
+    if (p.assignments[e] == Assignment::Valley) EXPECT_DOUBLE_EQ(*p.fold_angles[e], std::numbers::pi / 2);
+    if (p.assignments[e] == Assignment::Boundary) EXPECT_FALSE(p.fold_angles[e].has_value());
+  }
+}
+
+// ---- synthetic SVGs -------------------------------------------------------------------
+
+std::string svg(const std::string& body, const std::string& head = "") {
+  return "<?xml version=\"1.0\"?>\n" + head + "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"100\" height=\"100\">\n" + body + "\n</svg>\n";
+}
+
+const std::string kSquare = "<rect x=\"0\" y=\"0\" width=\"10\" height=\"10\" fill=\"none\" stroke=\"#000\"/>\n";
+
+std::set<std::pair<double, double>> rounded_vertices(const CreasePattern& p) {
+  std::set<std::pair<double, double>> s;
+  for (const auto& v : p.vertices) s.emplace(std::round(v.x() * 1e6) / 1e6 + 0.0, std::round(v.y() * 1e6) / 1e6 + 0.0);
+  return s;
+}
+
+TEST(SvgReader, CrossingLinesAreSplitAndFacesBuilt) {
+  // Two diagonals drawn end to end across the square, no vertex drawn at the centre.
+  SvgImportSummary s;
+  const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"0\" y1=\"0\" x2=\"10\" y2=\"10\" stroke=\"red\"/>"
+                                                  "<line x1=\"10\" y1=\"0\" x2=\"0\" y2=\"10\" stroke=\"blue\"/>"),
+                                    "x.svg", {}, &s);
+  EXPECT_EQ(p.num_vertices(), 5);
+  EXPECT_EQ(p.num_edges(), 8);
+  EXPECT_EQ(p.num_faces(), 4);
+  EXPECT_EQ(s.crossings, 1);
+  EXPECT_EQ(letters(p), (std::map<char, int>{{'B', 4}, {'M', 2}, {'V', 2}}));
+  // SVG's y points down; FOLD's y = -SVG y, so the centre is (5, -5).
+  EXPECT_TRUE(rounded_vertices(p).count({5.0, -5.0}));
+  const Topology t = build_topology(p);
+  ASSERT_EQ(t.interior_vertices.size(), 1u);
+  EXPECT_NEAR(t.stars[t.interior_vertices[0]].sector_sum(), 2 * std::numbers::pi, 1e-12);
+}
+
+TEST(SvgReader, TJunctionsSplitTheLineTheyMeet) {
+  // A valley from the left side to the middle of a mountain that crosses the square.
+  const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"5\" y1=\"0\" x2=\"5\" y2=\"10\" stroke=\"red\"/>"
+                                                  "<line x1=\"0\" y1=\"5\" x2=\"5\" y2=\"5\" stroke=\"blue\"/>"),
+                                    "t.svg");
+  EXPECT_EQ(p.num_vertices(), 8);  // 4 corners, the 3 ends on the sides, the T
+  EXPECT_EQ(letters(p), (std::map<char, int>{{'B', 7}, {'M', 2}, {'V', 1}}));
+  EXPECT_EQ(p.num_faces(), 3);
+}
+
+TEST(SvgReader, NearCoincidentEndsMergeWithinTheToleranceOnly) {
+  // The crease stops 2e-4 short of the far side (relative to the 14.1 diagonal: 1.4e-5).
+  const std::string body = kSquare + "<line x1=\"0\" y1=\"5\" x2=\"9.9998\" y2=\"5.0001\" stroke=\"red\"/>";
+  SvgImportSummary s;
+  const CreasePattern p = parse_svg(svg(body), "gap.svg", {}, &s);
+  EXPECT_EQ(p.num_faces(), 2);
+  EXPECT_EQ(letters(p)['M'], 1);
+  EXPECT_GT(s.max_merge_distance, 0.0);
+  EXPECT_LE(s.max_merge_distance, s.merge_tolerance);
+  EXPECT_NEAR(s.pattern_size, std::sqrt(200.0), 1e-12);
+  bool reported = false;
+  for (const auto& w : p.warnings) reported = reported || w.find("merged") != std::string::npos;
+  EXPECT_TRUE(reported);
+  // With a tolerance below the gap the crease dangles: it is removed and no face splits.
+  SvgReadOptions tight;
+  tight.merge_tolerance = 1e-6;
+  SvgImportSummary s2;
+  const CreasePattern q = parse_svg(svg(body), "gap.svg", tight, &s2);
+  EXPECT_EQ(q.num_faces(), 1);
+  EXPECT_EQ(letters(q)['M'], 0);
+  EXPECT_EQ(s2.dangling_edges_removed, 1);
+}
+
+TEST(SvgReader, TransformsComposeThroughNestedGroups) {
+  // The same square with diagonals drawn plainly at its final place, and through nested
+  // groups whose transforms (translate, rotate about a centre, scale, skew, matrix) compose
+  // to the identity on it plus a translation of (20, 30).
+  const std::string plain =
+      "<rect x=\"20\" y=\"30\" width=\"10\" height=\"10\" stroke=\"black\"/>"
+      "<line x1=\"20\" y1=\"30\" x2=\"30\" y2=\"40\" stroke=\"red\"/><line x1=\"30\" y1=\"30\" x2=\"20\" y2=\"40\" stroke=\"red\"/>";
+  const std::string nested =
+      "<g transform=\"translate(20 30) rotate(90, 5, 5)\">"
+      "  <g transform=\"scale(2) skewX(45)\">"
+      "    <g transform=\"matrix(1 0 0 1 0 0) skewX(-45) scale(0.5)\"><g transform=\"rotate(-90 5 5)\">"
+      "      <rect width=\"10\" height=\"10\" stroke=\"black\"/>"
+      "      <line x2=\"10\" y2=\"10\" stroke=\"red\"/><line x1=\"10\" y2=\"10\" stroke=\"red\"/>"
+      "    </g></g></g></g>";
+  const CreasePattern a = parse_svg(svg(plain), "plain.svg"), b = parse_svg(svg(nested), "nested.svg");
+  EXPECT_EQ(a.num_vertices(), 5);
+  EXPECT_EQ(rounded_vertices(a), rounded_vertices(b));
+  EXPECT_EQ(letters(a), letters(b));
+  // matrix() alone: a rotation by 90 degrees about the origin maps (10, 0) to (0, 10).
+  const CreasePattern c = parse_svg(svg("<g transform=\"matrix(0,1,-1,0,0,0)\">" + kSquare +
+                                        "<line x1=\"0\" y1=\"0\" x2=\"10\" y2=\"10\" stroke=\"red\"/></g>"),
+                                    "m.svg");
+  EXPECT_EQ(rounded_vertices(c), (std::set<std::pair<double, double>>{{0, 0}, {0, -10}, {-10, 0}, {-10, -10}}));
+}
+
+TEST(SvgReader, EveryPathCommandAbsoluteAndRelative) {
+  // One square boundary and its two diagonals, drawn four ways.
+  const std::string ways[] = {
+      "<path stroke=\"#000\" d=\"M0,0 L10,0 L10,10 L0,10 Z\"/><path stroke=\"#f00\" d=\"M0 0 L10 10 M10 0 L0 10\"/>",
+      "<path stroke=\"#000\" d=\"m0 0 h10 v10 h-10 z\"/><path stroke=\"#f00\" d=\"m0,0 l10,10 m0-10 l-10,10\"/>",
+      "<path stroke=\"#000\" d=\"M0 0H10V10H0V0\"/><path stroke=\"#f00\" d=\"M0 0 10 10M10 0 0 10\"/>",  // implicit line-tos
+      "<polygon stroke=\"#000\" points=\"0,0 10,0 10,10 0,10\"/><polyline stroke=\"#f00\" points=\"0 0 10 10\"/>"
+      "<path stroke=\"#f00\" d=\"m10 0 l-5 5 l-5 5\"/>",
+  };
+  for (const auto& w : ways) {
+    const CreasePattern p = parse_svg(svg(w), "p.svg");
+    EXPECT_EQ(p.num_vertices(), 5) << w;
+    EXPECT_EQ(p.num_faces(), 4) << w;
+    EXPECT_EQ(letters(p), (std::map<char, int>{{'B', 4}, {'M', 4}})) << w;
+    EXPECT_EQ(rounded_vertices(p), (std::set<std::pair<double, double>>{{0, 0}, {10, 0}, {0, -10}, {10, -10}, {5, -5}})) << w;
+  }
+}
+
+TEST(SvgReader, ColourInEveryCssForm) {
+  const std::pair<std::string, char> forms[] = {
+      {"stroke=\"#f00\"", 'M'},
+      {"stroke=\"#FF0000\"", 'M'},
+      {"stroke=\"rgb(255, 0, 0)\"", 'M'},
+      {"stroke=\"rgb(100%,0%,0%)\"", 'M'},
+      {"stroke=\"RED\"", 'M'},
+      {"style=\"fill:none; stroke: #0000ff\"", 'V'},
+      {"stroke=\"red\" style=\"stroke:blue\"", 'V'},  // style wins over the attribute
+      {"stroke=\"rgba(0,0,255,0.5)\"", 'V'},
+      {"stroke=\"#ff0\"", 'F'},
+      {"stroke=\"yellow\"", 'F'},
+      {"stroke=\"magenta\"", 'U'},
+      {"stroke=\"#f0f\"", 'U'},
+      {"stroke=\"lime\"", 'C'},
+      {"stroke=\"currentColor\" color=\"#00f\"", 'V'},
+  };
+  for (const auto& [attr, letter] : forms) {
+    const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" " + attr + "/>"), "c.svg");
+    if (letter == 'C') {  // a cut along the whole square splits the sheet in two
+      EXPECT_EQ(letters(p)['C'], 1) << attr;
+      continue;
+    }
+    EXPECT_EQ(letters(p)[letter], 1) << attr;
+    EXPECT_EQ(p.num_faces(), 2) << attr;
+  }
+  // Inherited from an enclosing group, overridden by the element.
+  const CreasePattern g = parse_svg(svg("<g stroke=\"#0000FF\">" + std::string("<rect width=\"10\" height=\"10\" stroke=\"black\"/>") +
+                                        "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\"/><g><line x1=\"5\" y1=\"0\" x2=\"5\" y2=\"10\"/></g></g>"),
+                                    "g.svg");
+  EXPECT_EQ(letters(g), (std::map<char, int>{{'B', 8}, {'V', 4}}));
+}
+
+TEST(SvgReader, OtherColoursAndUnstrokedShapesAreIgnoredWithAWarning) {
+  const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" stroke=\"#00ffff\"/>"
+                                                  "<line x1=\"5\" y1=\"0\" x2=\"5\" y2=\"10\" stroke=\"gray\" stroke-dasharray=\"2 2\"/>"
+                                                  "<rect width=\"10\" height=\"10\" fill=\"#eee\"/>"
+                                                  "<defs><line x1=\"0\" y1=\"0\" x2=\"10\" y2=\"10\" stroke=\"red\"/></defs>"),
+                                    "o.svg");
+  EXPECT_EQ(p.num_faces(), 1);
+  EXPECT_EQ(letters(p), (std::map<char, int>{{'B', 4}}));
+  int colour_warnings = 0;
+  for (const auto& w : p.warnings) colour_warnings += w.find("is not a crease colour") != std::string::npos;
+  EXPECT_EQ(colour_warnings, 2);
+}
+
+TEST(SvgReader, DashesDoNotChangeTheAssignment) {
+  const auto solid = parse_svg(svg(kSquare + "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" stroke=\"#00f\"/>"), "s.svg");
+  const auto dashed = parse_svg(svg(kSquare + "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" stroke=\"#00f\" stroke-dasharray=\"4,2\"/>"), "d.svg");
+  EXPECT_EQ(letters(solid), letters(dashed));
+  EXPECT_EQ(solid.fold_angles, dashed.fold_angles);
+}
+
+TEST(SvgReader, OpacityGivesTheFoldAngleAsOrigamiSimulatorReadsIt) {
+  const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" stroke=\"#00f\" opacity=\"0.5\"/>"
+                                                  "<g opacity=\"0.5\"><line x1=\"5\" y1=\"0\" x2=\"5\" y2=\"5\" stroke=\"#f00\" stroke-opacity=\"0.5\"/></g>"
+                                                  "<line x1=\"5\" y1=\"5\" x2=\"5\" y2=\"10\" stroke=\"#ff0\"/>"),
+                                    "a.svg");
+  int checked = 0;
+  for (int e = 0; e < p.num_edges(); ++e) {
+    switch (p.assignments[e]) {
+      case Assignment::Valley: EXPECT_DOUBLE_EQ(*p.fold_angles[e], std::numbers::pi / 2); ++checked; break;
+      case Assignment::Mountain: EXPECT_DOUBLE_EQ(*p.fold_angles[e], -std::numbers::pi / 4); ++checked; break;
+      case Assignment::Flat: EXPECT_DOUBLE_EQ(*p.fold_angles[e], 0.0); ++checked; break;
+      default: EXPECT_FALSE(p.fold_angles[e].has_value());
+    }
+  }
+  EXPECT_EQ(checked, 4);  // the valley is split in two by the T-junctions
+  // Written to FOLD and read back: the same letters and angles.
+  const CreasePattern q = parse_fold(write_fold_string(p), "round.fold");
+  EXPECT_EQ(q.fold_angles.size(), p.fold_angles.size());
+  for (int e = 0; e < q.num_edges(); ++e) {
+    EXPECT_EQ(q.assignments[e], p.assignments[e]);
+    if (!p.fold_angles[e]) continue;
+    ASSERT_TRUE(q.fold_angles[e].has_value());
+    EXPECT_NEAR(*q.fold_angles[e], *p.fold_angles[e], 1e-15);
+  }
+}
+
+TEST(SvgReader, LinesOvershootingTheBoundaryAreTrimmed) {
+  // A mountain from a corner and a valley from another cross 0.4 below the black square;
+  // the mountain also starts a little before its corner.
+  SvgImportSummary s;
+  const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"-0.2\" y1=\"-0.416\" x2=\"5.5\" y2=\"11.44\" stroke=\"red\"/>"
+                                                  "<line x1=\"10\" y1=\"0\" x2=\"4.5\" y2=\"11.44\" stroke=\"blue\"/>"),
+                                    "over.svg", {}, &s);
+  EXPECT_EQ(s.dangling_edges_removed, 3);          // the mountain's head, both tails past the crossing
+  EXPECT_EQ(s.faces_outside_boundary_removed, 1);  // the small triangle below the square
+  EXPECT_EQ(p.num_faces(), 3);
+  EXPECT_EQ(letters(p), (std::map<char, int>{{'B', 6}, {'M', 1}, {'V', 1}}));
+  const Topology t = build_topology(p);
+  EXPECT_EQ(t.components.size(), 1u);
+  for (const auto& v : p.vertices) {
+    EXPECT_GE(v.x(), -1e-12);
+    EXPECT_LE(v.x(), 10 + 1e-12);
+    EXPECT_LE(v.y(), 1e-12);
+    EXPECT_GE(v.y(), -10 - 1e-12);
+  }
+}
+
+// ---- bad SVGs -------------------------------------------------------------------------
+
+void expect_refused(const std::string& text, const std::vector<std::string>& parts) {
+  try {
+    (void)parse_svg(text, "bad.svg");
+    ADD_FAILURE() << "accepted: " << text.substr(0, 200);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("bad.svg", 0), 0u) << what;
+    for (const auto& p : parts) EXPECT_NE(what.find(p), std::string::npos) << "'" << p << "' not in: " << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+TEST(SvgReaderBadInput, RefusedNamingTheElement) {
+  expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"M0 0 L5 5\"/><path stroke=\"red\" d=\"M0 0 C1 1 2 2 3 3\"/>"),
+                 {"<path> #2", "d", "curve command 'C'"});
+  expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"M0 0 A5 5 0 0 1 10 10\"/>"), {"<path> #1", "'A'"});
+  expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"L0 0 10 10\"/>"), {"<path> #1", "begin with M"});
+  expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"M0 0 L10 x\"/>"), {"<path> #1", "d", "expected a number"});
+  expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"M0 0 L1e999 0\"/>"), {"<path> #1", "out of range"});
+  expect_refused(svg(kSquare + "<polyline stroke=\"red\" points=\"0 0 10\"/>"), {"<polyline> #1", "points", "odd number"});
+  expect_refused(svg(kSquare + "<line x1=\"10%\" x2=\"5\" stroke=\"red\"/>"), {"<line> #1", "x1", "relative unit"});
+  expect_refused(svg("<g transform=\"rotate(1,2)\">" + kSquare + "</g>"), {"<g> #1", "transform", "rotate() takes 1 or 3"});
+  expect_refused(svg("<g transform=\"spin(3)\">" + kSquare + "</g>"), {"transform", "unknown transform function 'spin'"});
+  expect_refused(svg(kSquare + "<line x2=\"10\" stroke=\"rgb(1,2)\"/>"), {"<line> #1", "stroke"});
+  expect_refused(svg(kSquare + "<rect width=\"5\" height=\"5\" rx=\"1\" stroke=\"red\"/>"), {"<rect> #2", "rounded corners"});
+  // The same crease drawn as a mountain and as a valley.
+  expect_refused(svg(kSquare + "<line x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\" stroke=\"red\"/><line x1=\"10\" y1=\"5\" x2=\"0\" y2=\"5\" stroke=\"blue\"/>"),
+                 {"<line> #1 (line", "<line> #2", "mountain and valley"});
+  expect_refused(svg("<line x2=\"10\" stroke=\"#888\"/>"), {"no crease lines"});
+  expect_refused(svg(""), {"no crease lines"});
+}
+
+TEST(SvgReaderBadInput, XmlProblemsAndEntityExpansionAreRefused) {
+  expect_refused("<svg xmlns=\"http://www.w3.org/2000/svg\"><line></svg>", {"line 1", "XML:"});
+  expect_refused("not xml at all", {"XML:"});
+  expect_refused("<html><body/></html>", {"root element is <html>"});
+  // Billion laughs: refused at the internal subset, before any entity is declared or expanded.
+  std::string lol = "<?xml version=\"1.0\"?>\n<!DOCTYPE svg [\n <!ENTITY lol \"lol\">\n";
+  for (int k = 1; k < 10; ++k) {
+    lol += " <!ENTITY lol" + std::to_string(k) + " \"";
+    for (int j = 0; j < 10; ++j) lol += "&lol" + (k > 1 ? std::to_string(k - 1) : std::string()) + ";";
+    lol += "\">\n";
+  }
+  lol += "]>\n<svg xmlns=\"http://www.w3.org/2000/svg\"><desc>&lol9;</desc></svg>\n";
+  expect_refused(lol, {"internal subset"});
+  // An external DTD reference alone (as Illustrator writes) is fine; it is never fetched.
+  const std::string illustrator = svg(kSquare, "<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\" \"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n");
+  EXPECT_EQ(parse_svg(illustrator, "ok.svg").num_faces(), 1);
+  // ... but an entity it might define is not expanded.
+  expect_refused(svg(kSquare + "<desc>&nbsp;</desc>", "<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\" \"svg11.dtd\">\n"), {"entity"});
+}
+
+TEST(SvgReaderBadInput, LimitsAreEnforced) {
+  std::string deep;
+  for (int k = 0; k < kMaxSvgDepth + 5; ++k) deep += "<g>";
+  for (int k = 0; k < kMaxSvgDepth + 5; ++k) deep += "</g>";
+  expect_refused(svg(kSquare + deep), {"nested more than " + std::to_string(kMaxSvgDepth)});
+  // One path with more segments than allowed: refused while reading, naming the path.
+  std::string d = "M0 0";
+  for (int k = 0; k <= kMaxSvgSegments; ++k) d += k % 2 ? " L0 0" : " L1 1";
+  expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"" + d + "\"/>"), {"<path> #1", "line segments"});
+}
+
+}  // namespace
+}  // namespace rigidfold
