@@ -5,6 +5,7 @@
 #include <map>
 
 #include "app/commands.hpp"
+#include "app/number_flags.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/flat_foldability.hpp"
@@ -125,7 +126,7 @@ void add_info_command(CLI::App& app) {
   cmd->add_option("pattern", *path, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
   cmd->add_flag("--json", *json, "print one JSON object");
   cmd->add_option("--tolerance-deg", *tol, "tolerance of the Kawasaki and developability checks, degrees (files with float32 or 6-digit coordinates need ~1e-3)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_in(1e-9, 10.0, "degrees"));  // below ~1e-12 deg the sector sums' own rounding would fail Kawasaki
   cmd->callback([path, json, tol] {
     const CreasePattern p = read_pattern(*path);
     const Topology t = build_topology(p, *path);

@@ -288,6 +288,11 @@ struct ForwardArgs {
   bool theta_given = false, json = false;
 };
 
+// The closed range of a spec's alpha1_deg/alpha2_deg, [1e-300, 90 - 1e-12] (as `vertex miura`),
+// as the open bounds number_in takes: the next doubles outside it.
+const double kMinAlphaBelow = std::nextafter(1e-300, 0.0);
+const double kMaxAlphaAbove = std::nextafter(90.0 - 1e-12, 90.0);
+
 // Forward step 1: the spec's vertices. Fills s.alpha1, s.alpha2 and, in independent mode,
 // theta (one drive angle per vertex); all radians.
 void read_forward_vertices(const Reader& r, const ForwardArgs& fa, const std::string& mode, MiuraString& s,
@@ -297,8 +302,8 @@ void read_forward_vertices(const Reader& r, const ForwardArgs& fa, const std::st
   if (fa.theta_given && !(std::isfinite(fa.theta) && std::fabs(fa.theta) < 90)) throw InputError("--theta", "must be in (-90, 90) degrees");
   for (std::size_t i = 0; i < verts.size(); ++i) {
     const std::string ptr = "/vertices/" + std::to_string(i);
-    s.alpha1.push_back(to_radians(r.number_in(verts[i], ptr, "alpha1_deg", 0, 90, "(0, 90)")));
-    s.alpha2.push_back(to_radians(r.number_in(verts[i], ptr, "alpha2_deg", 0, 90, "(0, 90)")));
+    s.alpha1.push_back(to_radians(r.number_in(verts[i], ptr, "alpha1_deg", kMinAlphaBelow, kMaxAlphaAbove, "[1e-300, 90 - 1e-12]")));
+    s.alpha2.push_back(to_radians(r.number_in(verts[i], ptr, "alpha2_deg", kMinAlphaBelow, kMaxAlphaAbove, "[1e-300, 90 - 1e-12]")));
     if (mode == "independent") {
       if (verts[i].contains("theta_deg")) theta.push_back(to_radians(r.number_in(verts[i], ptr, "theta_deg", -90, 90, "(-90, 90)")));
       else if (fa.theta_given) theta.push_back(to_radians(fa.theta));

@@ -2,6 +2,7 @@
 #include <new>
 
 #include "app/commands.hpp"
+#include "app/number_flags.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
 
@@ -20,6 +21,8 @@ int run_cli(int argc, const char* const* argv) {
   add_trace_command(app);
   add_string_command(app);
   add_import_command(app);
+  // No floating-point flag of any command takes NaN or +-inf (app/number_flags.hpp).
+  require_finite_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

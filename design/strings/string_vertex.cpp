@@ -14,7 +14,8 @@ double string_theta_limit(double alpha1, double alpha2) { return miura_theta_lim
 StringVertexState string_vertex_state(double alpha1, double alpha2, double theta) {
   // The kernel's closed form (kernel/vertex/miura_vertex.hpp) for the double path; the
   // templated frame above is the same formula for automatic derivatives (tested equal).
-  const MiuraVertexState m = miura_vertex(alpha1, alpha2, theta);
+  // Checked (closure residual, signs): a state that fails throws NoAnswerError, never returned.
+  const MiuraVertexState m = miura_vertex_checked(alpha1, alpha2, theta);
   StringVertexState s;
   s.phi = m.phi;
   s.psi = m.psi;

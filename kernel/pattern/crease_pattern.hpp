@@ -18,7 +18,14 @@
 namespace rigidfold {
 
 struct CreasePattern {
-  std::vector<Eigen::Vector3d> vertices;      // reference coordinates (z = 0 for 2D input)
+  std::vector<Eigen::Vector3d> vertices;      // reference coordinates (z = 0 for 2D input), in units of 2^length_exponent
+  // The file's coordinates are ldexp(vertices, length_exponent). complete_and_validate sets
+  // it when the pattern's extent lies outside [2^-20, 2^20] (a pattern of side 1e-300 or
+  // 1e300), so that the kernel works on coordinates of size ~1 (rigid foldability does not
+  // depend on the scale, and lengths squared neither underflow nor overflow). Scaling by a
+  // power of two is exact: writers (fold_to_json, with_folded_frame, folded_obj) give back
+  // the file's coordinates. 0 for every pattern within that band.
+  int length_exponent = 0;
   bool coords_2d = true;                      // true when the file gave 2D coordinates
   std::vector<std::array<int, 2>> edges;      // vertex index pairs
   std::vector<Assignment> assignments;        // one per edge

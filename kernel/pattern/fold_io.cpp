@@ -9,6 +9,7 @@
 
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/length_scale.hpp"
 #include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 
@@ -258,7 +259,8 @@ nlohmann::ordered_json fold_to_json(const CreasePattern& p) {
     if (it.key() != "file_frames") doc[it.key()] = it.value();
 
   Json coords = Json::array();
-  for (const auto& v : p.vertices) {
+  for (const auto& v0 : p.vertices) {
+    const Eigen::Vector3d v = to_file_units(p, v0);  // exact: a power of two (length_scale.hpp)
     if (p.coords_2d) coords.push_back({v[0], v[1]});
     else coords.push_back({v[0], v[1], v[2]});
   }

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/length_scale.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
@@ -262,6 +263,8 @@ void complete_and_validate(CreasePattern& p, const std::string& source) {
   if (p.edges.empty()) throw InputError(at(source, "edges_vertices"), "is empty");
   for (std::size_t i = 0; i < p.vertices.size(); ++i)
     if (!p.vertices[i].allFinite()) throw InputError(at(source, "vertices_coords[" + std::to_string(i) + "]"), "coordinate is not finite");
+  // Every check below and every solver after it works on coordinates of size ~1.
+  normalise_length_scale(p);
   for (int e = 0; e < p.num_edges(); ++e)
     for (int k = 0; k < 2; ++k)
       if (p.edges[e][k] < 0 || p.edges[e][k] >= p.num_vertices())

@@ -7,7 +7,9 @@
 // edges (at most 2 faces), consistent face orientation, and for patterns lying in a plane:
 // crossing edges, vertices lying on edges, and overlapping faces. Derives faces from the
 // planar embedding when none are given, and fills missing assignments (B on the boundary,
-// U inside). Throws InputError("<source>: <json path>", reason) on the first problem.
+// U inside). First normalises the coordinates by a power of two when the pattern is very
+// large or very small (length_scale.hpp), so a pattern of side 1e-300 or 1e300 gets the
+// checks it gets at side 1. Throws InputError("<source>: <json path>", reason) on the first problem.
 #include <string>
 
 #include "kernel/pattern/crease_pattern.hpp"

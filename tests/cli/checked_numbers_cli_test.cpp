@@ -1,0 +1,137 @@
+// Issue 20 on the command line: numbers checked where they enter (NaN and +-inf refused with
+// the flag named, documented ranges closed), and no closed-form result printed without its
+// own check: over a grid reaching the ends of every range, `vertex miura`, `vertex s4r` and
+// `string forward` either print an answer whose closure residual is within tolerance
+// (exit 0) or say "no answer within tolerance" (exit 3) - never a larger residual at exit 0.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "kernel/math/angle_units.hpp"
+#include "kernel/vertex/miura_vertex.hpp"
+#include "kernel/vertex/spherical_4r.hpp"
+#include "kernel/vertex/vertex_closure.hpp"
+#include "tests/support/run_command.hpp"
+
+namespace rigidfold {
+namespace {
+
+std::string num(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+// Exit 0 with a residual within tolerance, or exit 3 naming it; returns the status.
+int expect_checked(const test::CommandResult& r, const std::string& what, double tolerance,
+                   const std::function<double(const nlohmann::json&)>& worst_residual) {
+  EXPECT_TRUE(r.status == 0 || r.status == 3) << what << " exit " << r.status << ": " << r.err;
+  if (r.status == 0) {
+    const double res = worst_residual(nlohmann::json::parse(r.out));
+    EXPECT_LE(res, tolerance) << what;
+  } else if (r.status == 3) {
+    EXPECT_NE(r.err.find("no answer within tolerance"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("residual"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << what;
+  }
+  return r.status;
+}
+
+TEST(CheckedNumbersCli, MiuraVertexGridToTheEndsOfItsRanges) {
+  const std::vector<double> alphas{1e-300, 1e-170, 1e-12, 0.5, 45, 60, 89, 90 - 1e-12};
+  int answered = 0;
+  for (double a1 : alphas)
+    for (double a2 : alphas) {
+      const double limit = to_degrees(miura_theta_limit(to_radians(a1), to_radians(a2)));
+      for (double th : {0.0, 1e-300, -1e-12, 0.5 * limit, -limit, limit}) {
+        const std::string cmd = test::cli() + " vertex miura --alpha1 " + num(a1) + " --alpha2 " + num(a2) + " --theta " + num(th) + " --json";
+        const auto r = test::run_command(cmd);
+        const int status = expect_checked(r, cmd, kMiuraClosureTolerance, [&](const nlohmann::json& j) {
+          // Recomputed from the printed numbers, not only the printed residual.
+          std::vector<double> sectors, rho;
+          for (double s : j["sectors_deg"]) sectors.push_back(to_radians(s));
+          for (const auto& f : j["fold_angles_deg"]) rho.push_back(to_radians(f["fold_angle_deg"].get<double>()));
+          return std::max(j["closure_residual_rad"].get<double>(), vertex_closure_residual(sectors, rho).norm());
+        });
+        answered += status == 0;
+      }
+    }
+  // The closed form is accurate over the whole closed range: it always answers.
+  EXPECT_EQ(answered, static_cast<int>(alphas.size() * alphas.size() * 6));
+}
+
+TEST(CheckedNumbersCli, S4RGridToTheEndsOfItsRanges) {
+  const std::vector<std::vector<double>> twists{{50, 110, 100, 95}, {90, 90, 90, 90},  {-360, 360, 180, 0}, {1e-300, 90, 90, 90},
+                                                {45, 45, 45, 45},  {180, 180, 180, 180}, {30, 60, 30, 60},  {120, 100, 80, 60}};
+  for (const auto& t : twists) {
+    const S4RInputRange range = s4r_input_range({to_radians(t[0]), to_radians(t[1]), to_radians(t[2]), to_radians(t[3])}, 0);
+    std::vector<double> inputs{-180, 180, 0, 1e-12, 37};
+    for (double lim : range.limits()) inputs.push_back(to_degrees(lim));
+    for (double in : inputs) {
+      const std::string cmd = test::cli() + " vertex s4r --twists " + num(t[0]) + "," + num(t[1]) + "," + num(t[2]) + "," + num(t[3]) +
+                              " --input " + num(std::clamp(in, -180.0, 180.0)) + " --json";
+      expect_checked(test::run_command(cmd), cmd, kS4RClosureTolerance, [](const nlohmann::json& j) {
+        double worst = 0;
+        for (const auto& b : j["branches"]) worst = std::max(worst, b["closure_residual_rad"].get<double>());
+        return worst;
+      });
+    }
+  }
+}
+
+TEST(CheckedNumbersCli, NonFiniteAndOutOfRangeFlagsExitTwoNamingTheFlag) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rigidfold_flags_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string square = (dir / "square.fold").string();
+  std::ofstream(square) << R"({"vertices_coords": [[0,0],[1,0],[1,1],[0,1]], "edges_vertices": [[0,1],[1,2],[2,3],[3,0]]})";
+  struct Case {
+    std::string args, flag;
+  };
+  const std::vector<Case> cases{
+      {"info " + square + " --tolerance-deg nan", "--tolerance-deg"},
+      {"info " + square + " --tolerance-deg inf", "--tolerance-deg"},
+      {"info " + square + " --tolerance-deg 0", "--tolerance-deg"},
+      {"info " + square + " --tolerance-deg 11", "--tolerance-deg"},
+      {"vertex miura --alpha1 nan --alpha2 60 --theta 10", "--alpha1"},
+      {"vertex miura --alpha1 30 --alpha2 -inf --theta 10", "--alpha2"},
+      {"vertex miura --alpha1 30 --alpha2 60 --theta nan", "--theta"},
+      {"vertex miura --alpha1 1e-301 --alpha2 60 --theta 10", "--alpha1"},
+      {"vertex miura --alpha1 90 --alpha2 60 --theta 10", "--alpha1"},
+      {"vertex s4r --twists 90,nan,90,90 --input 10", "--twists"},
+      {"vertex s4r --twists 90,90,90,360.5 --input 10", "--twists"},
+      {"vertex s4r --twists 90,90,90,90 --input 1e999", "--input"},
+      {"generate miura --a nan --out " + (dir / "m.fold").string(), "--a"},
+      {"generate miura --alpha-deg inf --out " + (dir / "m.fold").string(), "--alpha-deg"},
+      {"generate square-twist --side -nan --out " + (dir / "s.fold").string(), "--side"},
+      {"trace " + square + " --to nan", "--to"},
+  };
+  for (const auto& c : cases) {
+    const auto r = test::run_command(test::cli() + " " + c.args);
+    EXPECT_EQ(r.status, 2) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.flag), std::string::npos) << c.args << ": " << r.err;
+  }
+  // The ends of the closed ranges are accepted.
+  for (const std::string ok : {"info " + square + " --tolerance-deg 1e-9", "info " + square + " --tolerance-deg 10",
+                               std::string("vertex miura --alpha1 1e-300 --alpha2 89.999999999999 --theta 0"),
+                               std::string("vertex s4r --twists -360,360,90,90 --input -180")})
+    EXPECT_EQ(test::run_command(test::cli() + " " + ok).status, 0) << ok;
+  std::filesystem::remove_all(dir);
+}
+
+// The issue's case: exit 0 printed rho_b = 0 (80 deg off) with a residual of 1.4 rad.
+TEST(CheckedNumbersCli, MiuraTinyAlphaIsAccurate) {
+  const auto r = test::run_command(test::cli() + " vertex miura --alpha1 1e-170 --alpha2 60 --theta 20 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["fold_angles_deg"][1]["fold_angle_deg"].get<double>(), 80.0, 1e-11);
+  EXPECT_LE(j["closure_residual_rad"].get<double>(), 1e-14);
+}
+
+}  // namespace
+}  // namespace rigidfold
