@@ -44,7 +44,7 @@ int expect_checked(const test::CommandResult& r, const std::string& what, double
 }
 
 TEST(CheckedNumbersCli, MiuraVertexGridToTheEndsOfItsRanges) {
-  const std::vector<double> alphas{1e-300, 1e-170, 1e-12, 0.5, 45, 60, 89, 90 - 1e-12};
+  const std::vector<double> alphas{1e-300, 1e-170, 1e-12, 60, 90 - 1e-12};
   int answered = 0;
   for (double a1 : alphas)
     for (double a2 : alphas) {
