@@ -7,6 +7,7 @@
 
 #include "app/commands.hpp"
 #include "app/summary_stream.hpp"
+#include "kernel/pattern/length_scale.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/geometry/folded_output.hpp"
@@ -98,7 +99,7 @@ void add_fold_command(CLI::App& app) {
     nlohmann::ordered_json j;
     j["pattern"] = a->pattern;
     j["out"] = a->out;
-    j["closure_mismatch"] = g.max_mismatch;
+    j["closure_mismatch"] = to_file_units(p, g.max_mismatch);  // the file's length units
     j["relative_mismatch"] = g.relative_mismatch();
     j["worst_edge"] = g.worst_edge;
     j["non_tree_hinges"] = g.non_tree_hinges;
@@ -106,7 +107,7 @@ void add_fold_command(CLI::App& app) {
       std::cout << j.dump(2) << "\n";
     } else {
       std::cout << "folded " << a->pattern << " -> " << a->out << (a->obj.empty() ? "" : " and " + a->obj) << "\n";
-      std::cout << "  closure mismatch " << g.max_mismatch << " (relative " << g.relative_mismatch() << ") over "
+      std::cout << "  closure mismatch " << to_file_units(p, g.max_mismatch) << " (relative " << g.relative_mismatch() << ") over "
                 << g.non_tree_hinges << " non-tree hinges";
       if (g.worst_edge >= 0) std::cout << ", worst at edge " << g.worst_edge;
       std::cout << "\n";

@@ -16,6 +16,7 @@
 
 #include "app/commands.hpp"
 #include "app/foldability_json.hpp"
+#include "kernel/pattern/length_scale.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/geometry/face_placement.hpp"
@@ -108,7 +109,7 @@ Json analyse(const fs::path& file, const fs::path& out_dir, OutputSet& outputs) 
     const fs::path folded = out_dir / (file.stem().string() + ".folded.fold");
     outputs.stage(folded.string(), write_fold_string(with_folded_frame(p, g, rho, "folded by rigidfold report")));
     j["folded_file"] = folded.string();
-    j["closure_mismatch"] = g.max_mismatch;
+    j["closure_mismatch"] = to_file_units(p, g.max_mismatch);  // the file's length units
     j["relative_closure_mismatch"] = g.relative_mismatch();
   }
   j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -47,6 +47,7 @@
 
 #include "app/commands.hpp"
 #include "app/summary_stream.hpp"
+#include "kernel/pattern/length_scale.hpp"
 #include "kernel/analysis/trace_motion.hpp"
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -128,7 +129,7 @@ Json branch_json(const MotionBranch& b, const CreasePattern& p) {
   j["stop_reason"] = to_string(b.stop);
   j["stopped_by"] = b.stopped_by;
   j["max_residual"] = b.max_residual;
-  j["max_mismatch"] = b.max_mismatch;
+  j["max_mismatch"] = to_file_units(p, b.max_mismatch);  // the file's length units
   Json ev = Json::array();
   for (const MotionEvent& e : b.events)
     ev.push_back({{"step", e.step}, {"kind", to_string(e.kind)}, {"edge", e.edge}, {"drive_deg", to_degrees(e.drive)},
@@ -291,7 +292,7 @@ void add_trace_command(CLI::App& app) {
       max_mis = std::max(max_mis, b.max_mismatch);
     }
     j["max_residual"] = max_res;
-    j["max_mismatch"] = max_mis;
+    j["max_mismatch"] = to_file_units(p, max_mis);
     if (m.branches.size() == 1)
       for (const char* key : {"branch", "driving_crease", "to_deg", "reached_deg", "steps", "stopped_by", "events", "message"})
         j[key] = bj[0][key];
