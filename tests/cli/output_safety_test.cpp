@@ -444,7 +444,9 @@ void expect_fold_types(const Json& doc, const std::string& what, bool frame) {
       ASSERT_TRUE(v.is_array()) << at;
       for (const auto& a : v) {
         ASSERT_TRUE(a.is_number() && std::isfinite(a.get<double>())) << at << ": " << a;
-        if (k == "edges_foldAngle") EXPECT_LE(std::fabs(a.get<double>()), 180.0) << at;
+        if (k == "edges_foldAngle") {
+          EXPECT_LE(std::fabs(a.get<double>()), 180.0) << at;
+        }
       }
     } else if (k != "vertices_coords") {
       EXPECT_TRUE(v.is_string()) << at;
