@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 #include "kernel/solve/portable_random.hpp"
 
@@ -129,7 +130,15 @@ CreasePattern build_string_pattern(const MiuraString& s, const Eigen::VectorXd& 
   p.extra["frame_title"] = "origami string of " + std::to_string(n) + " Miura vertices";
   p.extra["frame_classes"] = nlohmann::ordered_json::array({"creasePattern"});
   p.extra["frame_attributes"] = nlohmann::ordered_json::array({"2D"});
-  complete_and_validate(p, "string pattern");
+  try {
+    complete_and_validate(p, "string pattern");
+  } catch (const InputError& e) {
+    // The closed form holds for alpha down to 1e-300 deg, but a drawn crease at such an
+    // angle lies on the spine within the pattern's resolution (1e-10 of its size).
+    throw InputError(e.place(), std::string(e.what()).substr(e.place().size() + 2) +
+                                    " (the spec's crease pattern cannot be drawn: an alpha this close to 0 or 90 deg puts a "
+                                    "peripheral crease on another crease at these segment lengths and width)");
+  }
   return p;
 }
 
