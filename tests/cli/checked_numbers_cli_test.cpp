@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <span>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -83,6 +85,44 @@ TEST(CheckedNumbersCli, S4RGridToTheEndsOfItsRanges) {
       });
     }
   }
+}
+
+// `string forward` over alphas reaching the ends of the spec's range and theta to +-the
+// vertex limit: exit 0 with every vertex's printed fold angles closing its loop, 2 when the
+// spec's crease pattern cannot be drawn (named as such), or 3 - never a larger residual at 0.
+TEST(CheckedNumbersCli, StringForwardGridToTheEndsOfItsRanges) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rigidfold_string_grid_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::vector<double> alphas{1e-300, 1e-6, 30, 89.999999, 90 - 1e-12};
+  int answered = 0;
+  for (double a1 : alphas)
+    for (double a2 : alphas) {
+      const std::string spec = (dir / "spec.json").string();
+      std::ofstream(spec) << "{\"vertices\": [{\"alpha1_deg\": " << num(a1) << ", \"alpha2_deg\": " << num(a2)
+                          << "}, {\"alpha1_deg\": 40, \"alpha2_deg\": 50}], \"segment_length\": 1}";
+      const double limit = to_degrees(std::min(miura_theta_limit(to_radians(a1), to_radians(a2)), miura_theta_limit(to_radians(40), to_radians(50))));
+      for (double th : {0.0, 1e-12, 0.5 * limit, -0.999 * limit}) {
+        const std::string cmd = test::cli() + " string forward " + spec + " --theta " + num(th) + " --json";
+        const auto r = test::run_command(cmd);
+        if (r.status == 2) {
+          EXPECT_NE(r.err.find("cannot be drawn"), std::string::npos) << cmd << ": " << r.err;
+          continue;
+        }
+        answered += expect_checked(r, cmd, kMiuraClosureTolerance, [](const nlohmann::json& j) {
+                      double worst = 0;
+                      for (const auto& v : j["vertices"]) {
+                        const auto sec = miura_sectors(to_radians(v["alpha1_deg"].get<double>()), to_radians(v["alpha2_deg"].get<double>()));
+                        std::vector<double> rho;
+                        for (const char* c : {"spinal_out", "peripheral_1", "spinal_in", "peripheral_2"})
+                          rho.push_back(to_radians(v["fold_angles_deg"][c].get<double>()));
+                        worst = std::max(worst, vertex_closure_residual(std::span<const double>(sec.data(), 4), rho).norm());
+                      }
+                      return worst;
+                    }) == 0;
+      }
+    }
+  EXPECT_GT(answered, 40);  // the drawable part of the grid answers
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CheckedNumbersCli, NonFiniteAndOutOfRangeFlagsExitTwoNamingTheFlag) {
