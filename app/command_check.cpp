@@ -35,7 +35,7 @@ void print_text(const std::string& file, const FoldabilityReport& r) {
     for (const BranchPoint& p : r.points)
       if (p.kind == PointKind::kBifurcation)
         std::cout << "  bifurcation where crease " << p.parameter_edge << " is at " << to_degrees(p.parameter)
-                  << " deg (+-" << p.parameter_uncertainty << " rad), " << p.tangent_lines << " tangent lines\n";
+                  << " deg (within " << p.location_error_bound << " rad), " << p.tangent_lines << " tangent lines\n";
   }
 }
 

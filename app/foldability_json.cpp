@@ -87,7 +87,7 @@ Json point_json(std::size_t index, const BranchPoint& pt, const FoldabilityRepor
     jp["parameter"] = to_degrees(pt.parameter);
     jp["parameter_crease"] = pt.parameter_edge;
     jp["parameter_kind"] = "fold angle of crease " + std::to_string(pt.parameter_edge) + " (deg), the arriving branch's driving crease";
-    jp["location_uncertainty_rad"] = pt.parameter_uncertainty;
+    jp["location_error_bound_rad"] = pt.location_error_bound;  // bound on |x - x*|_2 over the unknowns
     jp["sigma_ratio"] = pt.sigma_second_smallest / std::max(pt.sigma_max, 1e-300);
   } else {
     jp["parameter"] = 0.0;

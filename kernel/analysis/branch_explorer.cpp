@@ -201,7 +201,7 @@ class Explorer {
   // add it as a point (or match a known one) and end the branch there.
   void end_at_bifurcation(TracedBranch& br, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     br.stopped_by = StopReason::kBifurcation;
-    const LocatedSingularPoint loc = locate_singular_point(sys_, a, b, opt_.locate_tolerance);
+    const LocatedSingularPoint loc = locate_singular_point(sys_, topology_, a, b, opt_.locate_tolerance);
     if (!loc.found) {
       br.stopped_by = StopReason::kBifurcationNotLocated;
       return;
@@ -213,7 +213,7 @@ class Explorer {
       bp.kind = PointKind::kBifurcation;
       bp.parameter_edge = br.driving_edge;
       bp.parameter = sys_.edges_from_unknowns(loc.x)[br.driving_edge];
-      bp.parameter_uncertainty = loc.parameter_uncertainty;
+      bp.location_error_bound = loc.error_bound;
       bp.sigma_second_smallest = loc.sigma_second_smallest;
       bp.sigma_max = loc.sigma_max;
       p = add_point(bp, loc.x, [](const Eigen::VectorXd&) { return true; });

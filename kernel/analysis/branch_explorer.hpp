@@ -9,8 +9,9 @@
 //      continuation (continue_one_dof).
 //   2. Along a branch, at every accepted point, the bordered determinant
 //      det[U_prev^T J(x); t^T] is compared with the previous point's; a sign change is a
-//      bifurcation, located to `locate_tolerance` in the path parameter
-//      (locate_singular_point) and added as a point (or matched with a known one). Its
+//      bifurcation, located by locate_singular_point (a march to
+//      `locate_tolerance` in the path parameter, then Newton on the extended system, with an
+//      error bound) and added as a point (or matched with a known one). Its
 //      tangent cone gives new departures: every line, both sides, except directions already
 //      used by a branch at that point (the way we came in, and branches traced before).
 //   3. A branch stops at: a bifurcation (kBifurcation); a crease reaching +-fold_limit()
@@ -50,7 +51,7 @@ struct BranchExplorerOptions {
   // fold_limit() ends a branch, sign_threshold (|rho| at most this has no sign), rank_cut
   // (DOF of a branch not traced) and cone_rank_cut (tangent cones) come from here.
   Tolerances tolerances = kDefaultTolerances;
-  double locate_tolerance = 1e-10;    // bracket on the path parameter of a bifurcation (radians)
+  double locate_tolerance = 1e-10;    // stop of the march that starts the bifurcation solve (radians)
   double same_point = 1e-6;           // |x - y|_inf below this: the same point
   double same_direction = 0.995;      // cosine above this: the same departure direction
   int max_branches = 64;
@@ -73,8 +74,8 @@ struct BranchPoint {
   int parameter_edge = -1;            // the edge whose fold angle is reported as the path parameter:
                                       // the arriving branch's driving crease, or the crease held at +-pi
   double parameter = 0.0;             // its fold angle there (radians)
-  double parameter_uncertainty = 0.0; // bifurcation: location accuracy along the path (radians of
-                                      // pseudo-arclength, which bounds the change of any fold angle)
+  double location_error_bound = 0.0;  // bifurcation: verified bound on |x - x*|_2 over the unknowns
+                                      // (radians; so on every fold angle), bifurcation.hpp
   double residual = 0.0;              // ||r||_inf there
   double sigma_second_smallest = 0.0; // independent check of a bifurcation: ~0 (kernel dimension >= 2)
   double sigma_max = 0.0;

@@ -3,14 +3,17 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <cmath>
+#include <limits>
 
 #include "kernel/solve/bordered_determinant.hpp"
 #include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold {
-LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Eigen::VectorXd& xa,
-                                           const Eigen::VectorXd& xb, double parameter_tolerance) {
+LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Topology& topology,
+                                           const Eigen::VectorXd& xa, const Eigen::VectorXd& xb,
+                                           double parameter_tolerance) {
   LocatedSingularPoint out;
+  out.error_bound = std::numeric_limits<double>::infinity();
   const int n = system.num_unknowns();
   if (n < 2 || xa.size() != n || xb.size() != n) return out;
   const Eigen::MatrixXd Ja = dense_jacobian(system, xa);
@@ -62,9 +65,9 @@ LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Ei
     const auto& sv = svd.singularValues();
     return n - 2 < sv.size() ? sv[n - 2] : 0.0;
   };
-  // March from xa (s = 0) toward the root, never past `hi`, the smallest s known to lie
-  // beyond s* (where g has the sign of gb).
-  double s = 0.0, hi = sb, estimate = sb * ga / (ga - gb);
+  // Stage 1 (header): march from xa (s = 0) toward the root, never past `hi`, the smallest
+  // s known to lie beyond s* (where g has the sign of gb).
+  double s = 0.0, hi = sb, estimate = sb * ga / (ga - gb), last_move = 0.0;
   Eigen::VectorXd x = xa, t;
   double f = sigma2(x, &t);
   for (int step = 0; step < 200; ++step) {
@@ -83,20 +86,27 @@ LocatedSingularPoint locate_singular_point(const ClosureSystem& system, const Ei
     }
     // Linear extrapolation of f (which falls linearly to 0 at s*) through the last two points.
     const double new_estimate = std::min(s_next + f_next * (s_next - s) / (f - f_next), hi);
-    out.parameter_uncertainty = std::abs(new_estimate - estimate);
+    last_move = std::abs(new_estimate - estimate);
     s = s_next;
     x = x_next;
     t = t_next;
     f = f_next;
     estimate = new_estimate;
-    if (out.parameter_uncertainty <= parameter_tolerance && std::abs(estimate - s) <= 1e3 * parameter_tolerance) break;
+    if (last_move <= parameter_tolerance && std::abs(estimate - s) <= 1e3 * parameter_tolerance) break;
   }
   bool ok = false;
-  out.x = correct(x + (estimate - s) * t, estimate, ok);
-  out.parameter = estimate;
-  Eigen::VectorXd r = system.residual(out.x);
-  out.residual = r.lpNorm<Eigen::Infinity>();
-  out.found = ok && out.parameter_uncertainty <= parameter_tolerance;
+  const Eigen::VectorXd start = correct(x + (estimate - s) * t, estimate, ok);
+  if (!ok || !(last_move <= parameter_tolerance)) return out;
+
+  // Stage 2: the regular extended system, with Ua as the basis of the left null vector.
+  out.refinement = solve_branch_point(system, topology, start, Ua);
+  out.x = out.refinement.x;
+  out.error_bound = out.refinement.error_bound;
+  out.parameter = ta.dot(out.x - xa);
+  out.residual = system.residual(out.x).lpNorm<Eigen::Infinity>();
+  // Inside the bracket (up to the bound): not a branch point found beyond it.
+  const double slack = out.error_bound;
+  out.found = out.refinement.converged && out.parameter >= -slack && out.parameter <= sb + slack;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense_jacobian(system, out.x));
   const auto& sv = svd.singularValues();
   out.sigma_max = sv.size() ? sv[0] : 0.0;
