@@ -5,7 +5,9 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/summary_stream.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/svg_reader.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -85,12 +87,18 @@ void add_import_command(CLI::App& app) {
       ->check(CLI::Range(1e-12, 0.099));
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->callback([a] {
+    // The output checked against the input before any work (kernel/pattern/output_set.hpp).
+    OutputSet outputs;
+    outputs.add_input("PATTERN", a->in);
+    outputs.add_output("--out", a->out);
+    const SummaryToStderrIfStdoutIsAnOutput to_stderr(outputs);
     SvgReadOptions options;
     options.merge_tolerance = a->merge;
     SvgImportSummary summary;
     const CreasePattern p = read_svg(a->in, options, &summary);
     const Topology t = build_topology(p, a->in);
-    write_fold(p, a->out);
+    outputs.stage(a->out, write_fold_string(p));
+    outputs.commit();
     const auto j = import_json(a->in, a->out, p, t, summary);
     if (a->json) std::cout << j.dump(2) << "\n";
     else print_text(j);
