@@ -896,7 +896,8 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
 
   CreasePattern p;
   p.coords_2d = true;
-  for (const auto& v : arr.vertices) p.vertices.emplace_back(v.x(), -v.y(), 0.0);  // SVG's y points down
+  // SVG's y points down (0 - y, not -y: no -0 in the written FOLD).
+  for (const auto& v : arr.vertices) p.vertices.emplace_back(v.x(), 0.0 - v.y(), 0.0);
   p.edges = arr.edges;
   for (int label : arr.edge_label) {
     p.assignments.push_back(parser.labels[label].assignment);
