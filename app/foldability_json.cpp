@@ -37,7 +37,8 @@ Json tolerances_json(const Tolerances& t) {
           {"at_180_rad", t.at_fold_limit},
           {"placement_mismatch_relative", t.placement_mismatch},
           {"kawasaki_rad", t.flat_kawasaki},
-          {"loop_gain_relative", t.loop_gain}};
+          {"loop_gain_relative", t.loop_gain},
+          {"evidence_floor_rad", t.evidence_floor}};
 }
 
 Json branch_json(const TracedBranch& b, const FoldabilityReport& r) {
@@ -169,6 +170,37 @@ Json foldability_json(const FoldabilityReport& r) {
   j["bifurcations"] = points;
   if (r.model == FoldabilityModel::kGeneralLoopClosure) j["mv_switches"] = switches_json(r.sign_switches);
   j["obstruction"] = r.obstruction ? obstruction_json(*r.obstruction) : Json(nullptr);
+  if (r.input_precision) {
+    const auto& ip = *r.input_precision;
+    j["input_precision"] = {{"decimal_places", ip.decimal_places},
+                            {"significant_digits", ip.significant_digits},
+                            {"coordinate_rounding", ip.coordinate_rounding},
+                            {"given_state_closure_gap_rad", ip.given_residual},
+                            {"sector_rounding_bound_rad", ip.max_sector_bound},
+                            {"witness_max_sector_change_rad", ip.max_sector_change},
+                            {"witness_change_over_bound", ip.max_change_ratio},
+                            {"gap_explained_by_rounding", ip.explained},
+                            {"exact_data_verdict", ip.exact_data_verdict}};
+  }
+  if (r.strictness)
+    j["strictness"] = {{"strict", r.strictness->strict},
+                       {"flat_lettered_creases", r.strictness->flat_lettered},
+                       {"flat_below_fraction_of_max_fold", r.strictness->flat_fraction},
+                       {"strict_obstruction_vertices", r.strictness->strict_obstruction_vertices},
+                       {"strict_obstruction", r.strictness->strict_obstruction_vertices.empty()
+                                                  ? "none found"
+                                                  : "two straight lettered crease lines cross at these degree-4 vertices: "
+                                                    "no motion from flat folds all four creases there (proof)"},
+                       {"meaning", r.strictness->strict ? "every M/V crease folds (strict)"
+                                                        : "weak: the listed M/V creases stay flat"}};
+  if (!r.search_evidence.empty()) {
+    Json ev = Json::array();
+    for (const AmplitudeEvidence& e : r.search_evidence)
+      ev.push_back({{"amplitude_rad", e.amplitude}, {"least_residual_rad", e.least_residual}, {"driving_crease", e.driving_edge}});
+    j["search_evidence"] = {{"sign_respecting_least_squares", ev},
+                            {"growth_exponent", r.residual_growth_exponent},
+                            {"evidence_floor_rad", r.tolerances.evidence_floor}};
+  }
   j["max_residual"] = r.max_residual;
   j["interference"] = r.interference_checked;
   j["seconds"] = r.seconds;

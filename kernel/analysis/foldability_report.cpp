@@ -7,6 +7,11 @@
 
 #include "kernel/analysis/path_watch.hpp"
 #include "kernel/analysis/reference_mobility.hpp"
+#include "kernel/analysis/rounding_witness.hpp"
+#include "kernel/analysis/straight_line_folds.hpp"
+#include "kernel/geometry/fold_angles.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/solve/rank.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
 #include "kernel/math/number_text.hpp"
 
@@ -38,9 +43,18 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
   ReferenceMobilityOptions mo;
   mo.use_assignment = o.use_assignment;
   mo.tolerances = o.tolerances;
-  ReferenceMobility m = reference_mobility(p, t, mo);
+  // A folded form without holes whose given state does not close: judge it against the
+  // file's precision, on the rounding witness's sectors.
+  std::optional<RoundingWitness> witness;
+  if (count_holes(t) == 0 && !t.interior_vertices.empty()) {
+    const Eigen::VectorXd given = reference_fold_angles(p, t);
+    if (max_vertex_closure_residual(t, given) > o.tolerances.certificate_residual)
+      witness = rounding_witness(p, t, given);
+  }
+  ReferenceMobility m = reference_mobility(p, witness && witness->explained ? witness->witness : t, mo);
   r.model = FoldabilityModel::kGivenStateHoleClosure;
-  r.model_name = "general loop-closure solver with SE(3) hole closures, from the given state";
+  r.model_name = count_holes(t) > 0 ? "general loop-closure solver with SE(3) hole closures, from the given state"
+                                     : "general loop-closure solver, from the given state";
   r.is_proof = m.verdict != Verdict::kUndecided;
   r.verdict = class_of(m.verdict, r.is_proof);
   r.reason = m.reason;
@@ -62,6 +76,41 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
   }
   r.max_residual = m.max_residual;
   r.interference_checked = std::string(kLocalAndGlobal) + " traced point";
+  if (!witness) return;
+  FoldabilityReport::InputPrecision ip;
+  ip.decimal_places = witness->precision.decimal_places;
+  ip.significant_digits = witness->precision.significant_digits;
+  ip.coordinate_rounding = witness->precision.max_rounding;
+  ip.given_residual = witness->given_residual;
+  ip.max_sector_bound = witness->max_sector_bound;
+  ip.max_sector_change = witness->max_sector_change;
+  ip.max_change_ratio = witness->max_change_ratio;
+  ip.explained = witness->explained;
+  ip.exact_data_verdict = "not foldable from the given state as read: it is no configuration of the exact data (closure gap " +
+                          short_text(witness->given_residual) + " rad), and its flat state is none either";
+  const std::string precision_text = "coordinates written with " + std::to_string(ip.decimal_places) + " decimals (rounding <= " +
+                                     short_text(ip.coordinate_rounding) + "), sectors known to " + short_text(ip.max_sector_bound) +
+                                     " rad";
+  if (!witness->explained) {
+    r.verdict = FoldabilityClass::kUndecided;
+    r.is_proof = false;
+    r.dof = 0;
+    r.branches.clear();
+    r.obstruction.reset();
+    r.reason = "the given state leaves a closure gap of " + short_text(ip.given_residual) +
+               " rad, more than the file's rounding explains (" + precision_text + "; the least sector change closing it is " +
+               short_text(ip.max_change_ratio) + " x its bound at vertex " + std::to_string(witness->worst_vertex) +
+               "): not a rigidly folded state of this pattern within its precision";
+  } else if (r.foldable()) {
+    r.verdict = FoldabilityClass::kFoldableWithinTolerance;
+    r.reason = "foldable within the input's precision: " + precision_text + "; a pattern whose sectors differ from the file's by at most " +
+               short_text(ip.max_sector_change) + " rad (" + short_text(ip.max_change_ratio) +
+               " of the rounding bound) has the given state as an exact configuration, and " + r.reason;
+  } else {
+    r.reason = "within the input's precision (" + precision_text + ", sectors moved by at most " + short_text(ip.max_sector_change) +
+               " rad to close the given state): " + r.reason;
+  }
+  r.input_precision = ip;
 }
 
 // 2. Multiplier propagation: the exact verdict, and the family sampled per component.
@@ -148,11 +197,16 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   r.dof_basis = "rank of the closure Jacobian at the traced point (" + g.trace.dof_method + "), singular values below " +
                 short_text(o.tolerances.rank_cut) + " x largest dropped";
   r.sign_switches = g.trace.sign_switches;
+  if (g.verdict == Verdict::kRigidlyFoldable) r.strictness = g.strictness;
+  r.search_evidence = g.evidence;
+  r.residual_growth_exponent = g.growth_exponent;
   r.max_residual = g.trace.max_residual;
   if (g.verdict == Verdict::kRigidlyFoldable) r.certificate_mismatch = g.certificate_mismatch;
-  if (g.verdict == Verdict::kNotRigidlyFoldable) {
+  if (g.verdict == Verdict::kNotRigidlyFoldable || (g.verdict == Verdict::kUndecided && g.least_residual >= 0)) {
     FoldabilityObstruction ob;
-    ob.kind = g.is_proof ? "no foldable crease" : "no folded point found near flat";
+    ob.kind = g.is_proof ? "no foldable crease"
+              : g.verdict == Verdict::kUndecided ? "no folded point found near flat, no evidence either way"
+                                                  : "no folded point found near flat";
     ob.message = g.reason;
     ob.least_residual = g.least_residual;
     ob.worst_vertices = g.worst_vertices;
@@ -199,6 +253,10 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
     r.dof = 1;
     r.max_residual = certified->max_residual;
     r.obstruction.reset();
+    // Strictness at the branch's farthest valid point (before any face crossing).
+    const int last = (certified->global_interference_index >= 0 ? certified->global_interference_index
+                                                                 : static_cast<int>(certified->path.size())) - 1;
+    if (last >= 0) r.strictness = strictness_at(p, certified->path[last]);
     r.reason = "branch " + std::to_string(certified->id) +
                " of the branch explorer leaves the flat state, keeps every letter and reaches the certificate fold; " +
                g.reason;
@@ -206,6 +264,70 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   r.branches = std::move(x.branches);
   r.points = std::move(x.points);
   r.interference_checked = std::string(kLocalAndGlobal) + " explored point";
+}
+
+StraightLineOptions line_options(const FoldabilityOptions& o) {
+  StraightLineOptions so;
+  so.use_assignment = o.use_assignment;
+  so.tolerances = o.tolerances;
+  return so;
+}
+
+// The straight-line facts (straight_line_folds.hpp): a line that folds alone certifies weak
+// foldability where the search found nothing; crossing lines prove that no motion is strict.
+void straight_line_report(const CreasePattern& p, const Topology& t, const FoldabilityOptions& o,
+                          const StraightLineAnalysis& lines, FoldabilityReport& r) {
+  if (r.strictness) r.strictness->strict_obstruction_vertices = lines.strict_obstruction_vertices;
+  if (r.foldable() || lines.folds.empty()) return;
+  const StraightLineFold& line = lines.folds.front();
+  // DOF on the motion (halfway), the same rank test as the general verdict's.
+  const ClosureSystem sys(p, t);
+  Eigen::VectorXd rho_mid = line.path[line.path.size() / 2];
+  Eigen::VectorXd res;
+  Eigen::SparseMatrix<double> J;
+  sys.evaluate(sys.unknowns_from_edges(rho_mid), res, J);
+  RankOptions ro;
+  ro.relative_tolerance = o.tolerances.rank_cut;
+  const RankResult rk = jacobian_rank(J, ro);
+  TracedBranch b;
+  b.id = static_cast<int>(r.branches.size());
+  b.from_point = 0;
+  b.dof_at_departure = rk.dof;
+  b.dof_method = rk.method;
+  b.driving_edge = line.creases.front();
+  PathWatchOptions wo;
+  wo.tolerances = o.tolerances;
+  PathWatch watch(p, b.driving_edge, wo);
+  for (const Eigen::VectorXd& rho : line.path) {
+    b.max_fold = std::max(b.max_fold, rho.cwiseAbs().maxCoeff());
+    PathWatch::mark_letters(watch.observe(rho), b);
+    b.path.push_back(rho);
+  }
+  b.max_residual = line.max_residual;
+  b.valid_points = static_cast<int>(b.path.size());
+  b.driving_begin = b.path.front()[b.driving_edge];
+  b.driving_end = b.path.back()[b.driving_edge];
+  b.stopped_by = StopReason::kFoldLimit;
+  b.stop_crease = b.driving_edge;
+  b.stop_message = "the straight line reaches the fold limit (every crease of it at once)";
+  r.verdict = FoldabilityClass::kFoldable;
+  r.is_proof = true;
+  r.dof = rk.dof;
+  r.dof_basis = "rank of the closure Jacobian halfway along the straight-line fold (" + rk.method + "), singular values below " +
+                short_text(o.tolerances.rank_cut) + " x largest dropped";
+  r.max_residual = std::max(r.max_residual, line.max_residual);
+  r.obstruction.reset();
+  r.strictness = strictness_at(p, line.path.back());
+  r.strictness->strict_obstruction_vertices = lines.strict_obstruction_vertices;
+  std::string verts;
+  r.reason = "the straight crease line of " + std::to_string(line.creases.size()) + " creases from boundary vertex " +
+             std::to_string(line.vertices.front()) + " to boundary vertex " + std::to_string(line.vertices.back()) +
+             " folds alone (every other crease flat), " + (line.sign < 0 ? "as a mountain" : "as a valley") +
+             ", closure residual at most " + short_text(line.max_residual) + " rad along the motion to " +
+             short_text(o.tolerances.fold_limit()) + " rad: weakly foldable (" +
+             std::to_string(lines.folds.size()) + " such line(s) checked)" +
+             (r.reason.empty() ? std::string("") : "; the search: " + r.reason);
+  r.branches.push_back(std::move(b));
 }
 
 }  // namespace
@@ -247,6 +369,20 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
             "reference";
     return c;
   }
+  if (!topology.interior_vertices.empty()) {
+    // A folded form whose sectors are not developable: the flat state is no configuration.
+    double worst = 0.0;
+    for (int v : topology.interior_vertices)
+      worst = std::max(worst, std::abs(topology.stars[v].sector_sum() - 2 * std::numbers::pi));
+    if (worst > options.tolerances.flat_kawasaki &&
+        reference_fold_angles(pattern, topology).cwiseAbs().maxCoeff() > options.tolerances.sign_threshold) {
+      c.model = FoldabilityModel::kGivenStateHoleClosure;
+      c.why = "a folded form whose vertices are not developable (sector sums differ from 360 deg by up to " +
+              short_text(worst) + " rad): the flat state is no configuration of these sectors; the given (3D) state is the "
+              "reference";
+      return c;
+    }
+  }
   if (options.force_general) {
     c.model = FoldabilityModel::kGeneralLoopClosure;
     c.why = "forced (--general)";
@@ -279,8 +415,34 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
     r.model_choice = c.why;
     switch (c.model) {
       case FoldabilityModel::kGivenStateHoleClosure: given_state_report(pattern, topology, options, r); break;
-      case FoldabilityModel::kMultiplierPropagation: multiplier_report(pattern, topology, options, *c.multiplier, r); break;
-      default: general_report(pattern, topology, options, r); break;
+      case FoldabilityModel::kMultiplierPropagation:
+        if (c.multiplier->verdict == Verdict::kRigidlyFoldable ||
+            straight_line_folds(pattern, topology, line_options(options)).crossing_vertices.empty()) {
+          multiplier_report(pattern, topology, options, *c.multiplier, r);
+          break;
+        }
+        // Two straight lines cross at some vertex (multipliers 0 and infinity there): the
+        // model's "no" holds for motions that fold every crease, not for one that leaves a
+        // line flat, so the general model and the straight-line facts decide.
+        r.model_choice += "; but straight crease lines cross at some vertices, where its \"no\" (" + c.multiplier->reason +
+                          ") only rules out motions that fold every crease: the general model decides";
+        [[fallthrough]];
+      default: {
+        const StraightLineAnalysis lines = straight_line_folds(pattern, topology, line_options(options));
+        if (!lines.folds.empty() && !lines.strict_obstruction_vertices.empty()) {
+          // Both questions are settled exactly: weakly foldable (a line folds alone), not
+          // strictly (crossing lettered lines). The numerical search could add neither.
+          r.model = FoldabilityModel::kGeneralLoopClosure;
+          r.model_name = "straight crease lines (exact)";
+          r.model_choice += "; a straight line folds alone and straight lettered lines cross: both strict and weak "
+                            "foldability are decided exactly, the numerical search is not run";
+          r.interference_checked = std::string(kLocalInterferenceOnly) + " (a single line folding: faces cannot cross before 180 deg)";
+        } else {
+          general_report(pattern, topology, options, r);
+        }
+        straight_line_report(pattern, topology, options, lines, r);
+        break;
+      }
     }
   } catch (const std::runtime_error& e) {  // a solver that cannot handle this sheet (e.g. a handle)
     r = FoldabilityReport{};

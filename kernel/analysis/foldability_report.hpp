@@ -4,8 +4,11 @@
 // choose_model) go through it, and no caller decides a verdict of its own.
 //
 // Model choice (DESIGN.md, "Model only what a scene needs"), in this order:
-//   1. a sheet with holes (tubes): given-state mobility with one SE(3) closure per hole
-//      (reference_mobility.hpp): DOF 0 is a proof of rigidity, a traced branch a yes;
+//   1. a sheet with holes (tubes), or a folded form (3D given state) whose vertices are not
+//      developable (so the flat state is no configuration of its sectors): given-state
+//      mobility (reference_mobility.hpp; one SE(3) closure per hole): DOF 0 is a proof of
+//      rigidity, a traced branch a yes. A given state that does not close exactly is
+//      judged against the input's precision (rounding_witness.hpp);
 //   2. every interior vertex a flat-foldable degree-4 vertex: multiplier propagation
 //      (multiplier_propagation.hpp), exact both ways, O(creases); the fold family is sampled
 //      from flat to the fold limit, one branch per family component;
@@ -19,13 +22,16 @@
 //
 // Verdict classes (DESIGN.md, "Verdict classes and tolerance"):
 //   kFoldable                 a certified path (traced branch or exact family);
-//   kFoldableWithinTolerance  the closure gap is below what the input's rounding explains
-//                             (reserved for the input-precision check; not produced yet);
+//   kFoldableWithinTolerance  a folded form whose closure gap the input's rounding explains:
+//                             a pattern within the file's precision (the rounding witness)
+//                             has the given state as an exact configuration and folds from it;
 //   kNotFoldableProof         loop gain != 1, a pin, no mode matching the letters, DOF 0
 //                             at a regular given state, no foldable crease;
-//   kNotFoldableEvidence      the general search found no folded point near flat: numerical
-//                             evidence within the search, not a proof (is_proof = false);
-//   kUndecided                the models available did not decide.
+//   kNotFoldableEvidence      the general search found no folded point near flat and its
+//                             least residual is above the evidence floor and grows with the
+//                             fold amplitude: numerical evidence, not a proof (is_proof false);
+//   kUndecided                the models available did not decide (a search whose least
+//                             residual sits near its floor, or does not grow with the fold).
 //
 // Units: radians, per-edge fold angles with the FOLD sign (valley > 0, mountain < 0);
 // residuals ||r||_inf in radians; mismatches relative to the pattern's size.
@@ -95,11 +101,32 @@ struct FoldabilityReport {
   std::string exploration_note;     // why it did not, when it did not
   double exploration_seconds = 0.0;
   std::vector<SignSwitch> sign_switches;  // general model: along the search's certificate trace
+  // General model, foldable by the search's certificate: strict (every M/V crease folds) or
+  // weak (the listed lettered creases stay flat). Empty on other models and verdicts.
+  std::optional<StrictnessReport> strictness;
+  // General model, no folded point found: the least sign-respecting closure residual at
+  // each fold amplitude and its growth exponent (general_verdict.hpp, step 5) - the
+  // evidence behind "not foldable (evidence)" or "undecided".
+  std::vector<AmplitudeEvidence> search_evidence;
+  double residual_growth_exponent = 0.0;
   std::optional<FoldabilityObstruction> obstruction;  // when not foldable
   double max_residual = 0.0;        // largest closure residual along the reported branches (rad)
   std::optional<double> certificate_mismatch;     // face placement of the certificate (relative)
   std::optional<double> certificate_max_fold;     // multiplier: largest |rho| at the certificate (rad)
   std::optional<double> max_loop_gain_defect;     // multiplier: over the independent cycles
+  // A folded form whose given state does not close exactly (rounded coordinates): the
+  // rounding witness (rounding_witness.hpp) and the verdict of the exact data beside it.
+  struct InputPrecision {
+    int decimal_places = 0, significant_digits = 0;
+    double coordinate_rounding = 0.0;   // largest bound on a coordinate's rounding (length unit)
+    double given_residual = 0.0;        // closure gap of the given state as read (radians)
+    double max_sector_bound = 0.0;      // largest sector error the rounding can cause (radians)
+    double max_sector_change = 0.0;     // largest change the witness needed (radians)
+    double max_change_ratio = 0.0;      // <= 1: the gap is explained by the rounding
+    bool explained = false;
+    std::string exact_data_verdict;     // what the exact data gives
+  };
+  std::optional<InputPrecision> input_precision;
   // Given-state model (sheets with holes).
   int holes_closed = 0;
   double reference_residual = 0.0;

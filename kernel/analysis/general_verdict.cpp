@@ -120,6 +120,15 @@ struct Tracer {
 
 }  // namespace
 
+StrictnessReport strictness_at(const CreasePattern& pattern, const Eigen::VectorXd& rho) {
+  StrictnessReport st;
+  const double cut = st.flat_fraction * rho.cwiseAbs().maxCoeff();
+  for (int e = 0; e < pattern.num_edges(); ++e)
+    if (assigned_fold_sign(pattern.assignments[e]) != 0 && std::abs(rho[e]) <= cut) st.flat_lettered.push_back(e);
+  st.strict = st.flat_lettered.empty();
+  return st;
+}
+
 GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& topology,
                                const GeneralVerdictOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -145,8 +154,6 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     int edge;
   };
   std::vector<Candidate> candidates;
-  double least = std::numeric_limits<double>::infinity();
-  Eigen::VectorXd least_x;
   SplitMix64 rng{opt.seed};
   const std::vector<int> drivers = driving_creases(sys, topology, opt.max_driving_creases);
   for (int e : drivers) {
@@ -167,14 +174,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       nopt.stall_window = opt.least_squares_stall_window;
       const NewtonResult nr = newton_project(sys, x0, nopt);
       ++out.starts_tried;
-      if (!nr.converged) {
-        const double res = inf_norm(sys.residual(nr.x));
-        if (res < least) {
-          least = res;
-          least_x = nr.x;
-        }
-        continue;
-      }
+      if (!nr.converged) continue;
       ++out.starts_converged;
       const Eigen::VectorXd rho = sys.edges_from_unknowns(nr.x);
       const int bad = first_crease_against_letter(sign, rho, opt.tolerances.sign_threshold);
@@ -187,27 +187,98 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     }
   }
 
+  // 5. No candidate: sign-respecting least squares at each amplitude (header, step 5).
+  Eigen::VectorXd evidence_x;
+  if (candidates.empty() && !drivers.empty()) {
+    std::vector<int> bounds(n, 0);
+    for (int i = 0; i < n; ++i) bounds[i] = sign[sys.edge_of_unknown(i)];
+    SplitMix64 erng{opt.seed};
+    std::vector<Eigen::VectorXd> unit_starts;  // one start per driving crease, magnitudes / start_max
+    for (std::size_t d = 0; d < drivers.size(); ++d) {
+      Eigen::VectorXd x0(n);
+      for (int i = 0; i < n; ++i) {
+        const double mag = (opt.start_min + (opt.start_max - opt.start_min) * erng.uniform()) / opt.start_max;
+        const int sg = sign[sys.edge_of_unknown(i)];
+        x0[i] = (sg != 0 ? sg : (erng.uniform() < 0.5 ? -1.0 : 1.0)) * mag;
+      }
+      unit_starts.push_back(std::move(x0));
+    }
+    for (double eps : opt.evidence_amplitudes) {
+      AmplitudeEvidence ev;
+      ev.amplitude = eps;
+      ev.least_residual = std::numeric_limits<double>::infinity();
+      for (std::size_t d = 0; d < drivers.size(); ++d) {
+        const int e = drivers[d];
+        const int k = sys.unknown_of_edge(e);
+        Eigen::VectorXd x0 = unit_starts[d] * eps;
+        x0[k] = (sign[e] != 0 ? sign[e] : 1) * eps;
+        NewtonOptions nopt;
+        nopt.tolerance = opt.tolerances.residual;
+        nopt.held_unknowns = {k};
+        nopt.max_iterations = opt.least_squares_iterations;
+        nopt.stall_window = opt.least_squares_stall_window;
+        nopt.sign_bounds = bounds;
+        const NewtonResult nr = newton_project(sys, x0, nopt);
+        ++out.starts_tried;
+        const double res = inf_norm(sys.residual(nr.x));
+        if (nr.converged &&
+            first_crease_against_letter(sign, sys.edges_from_unknowns(nr.x), opt.tolerances.sign_threshold) < 0) {
+          ++out.starts_converged;
+          candidates.push_back({nr.x, e});
+        }
+        if (res < ev.least_residual) {
+          ev.least_residual = res;
+          ev.driving_edge = e;
+          if (out.evidence.empty()) evidence_x = nr.x;  // the largest amplitude's: worst vertices
+        }
+      }
+      out.evidence.push_back(ev);
+      if (!candidates.empty()) break;
+    }
+  }
+
   if (candidates.empty()) {
-    out.verdict = Verdict::kNotRigidlyFoldable;
-    out.is_proof = false;
     std::ostringstream why;
     why << "no folded point found near flat (" << out.starts_tried << " starts, " << drivers.size()
-        << " driving creases held at " << opt.held_value << " rad)";
+        << " driving creases held at " << opt.held_value << " rad, then sign-respecting least squares at";
+    for (const AmplitudeEvidence& ev : out.evidence) why << " " << ev.amplitude;
+    why << " rad)";
     if (out.starts_wrong_sign > 0)
       why << "; " << out.starts_wrong_sign << " converged only against the assignment (e.g. crease "
           << out.wrong_sign_crease << ")";
-    if (std::isfinite(least)) {
-      out.least_residual = least;
-      const Eigen::VectorXd r = sys.residual(least_x);
+    bool evidence = false;
+    if (!out.evidence.empty() && std::isfinite(out.evidence[0].least_residual)) {
+      out.least_residual = out.evidence[0].least_residual;
+      const Eigen::VectorXd r = sys.residual(evidence_x);
       for (int b = 0; b < sys.num_vertices(); ++b)
         out.worst_vertices.emplace_back(sys.vertex_of_block(b), r.segment(3 * b, 3).norm());
       std::sort(out.worst_vertices.begin(), out.worst_vertices.end(),
                 [](const auto& a, const auto& b) { return a.second > b.second; });
       if (out.worst_vertices.size() > 5) out.worst_vertices.resize(5);
-      why << "; least residual " << least;
+      why << "; least residual";
+      for (const AmplitudeEvidence& ev : out.evidence) why << " " << ev.least_residual << " at " << ev.amplitude;
+      why << " rad";
       if (!out.worst_vertices.empty()) why << " (worst vertex " << out.worst_vertices[0].first << ")";
+      const bool above_floor = out.least_residual >= opt.tolerances.evidence_floor;
+      if (out.evidence.size() >= 2 && out.evidence[1].least_residual > 0) {
+        out.growth_exponent = std::log(out.evidence[0].least_residual / out.evidence[1].least_residual) /
+                              std::log(out.evidence[0].amplitude / out.evidence[1].amplitude);
+        why << ", growing like amplitude^" << out.growth_exponent;
+      }
+      evidence = above_floor && out.evidence.size() >= 2 && out.growth_exponent >= opt.min_growth_exponent;
+      if (!above_floor)
+        why << " - below the evidence floor " << opt.tolerances.evidence_floor
+            << ": the search stopped near its own threshold, which is no evidence either way";
+      else if (!evidence)
+        why << " - it does not grow with the fold as a geometric obstruction does: no evidence either way";
     }
-    why << " - numerical evidence within the search, not a proof";
+    out.is_proof = false;
+    if (evidence) {
+      out.verdict = Verdict::kNotRigidlyFoldable;
+      why << " - numerical evidence within the search, not a proof";
+    } else {
+      out.verdict = Verdict::kUndecided;
+    }
     out.reason = why.str();
     return finish();
   }
@@ -280,6 +351,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
                     trial.certificate_mismatch <= opt.tolerances.placement_mismatch;
     if (ok) {
       trial.verdict = Verdict::kRigidlyFoldable;
+      trial.strictness = strictness_at(pattern, trial.certificate_angles);
       trial.is_proof = true;  // the traced path is the certificate
       std::ostringstream why;
       why << "traced a folding path to max |rho| = " << trial.trace.max_fold << " rad (DOF "

@@ -34,13 +34,23 @@
 //  4. Verdict kRigidlyFoldable if the trace reaches max |rho| >= certificate_fold with
 //     every M/V sign respected, and face placement (place_faces) of the last valid point has
 //     relative mismatch <= tolerances.placement_mismatch. The certificate is that point.
-//     kNotRigidlyFoldable if no start produced a candidate. This "no" is NUMERICAL EVIDENCE
-//     within the search (finitely many starts near flat), not a proof (unlike the
-//     multiplier model's loop-gain obstruction). The obstruction reported: the least
-//     residual ||r||_inf reached by Gauss-Newton least squares with the driving crease held
-//     at +-held_value, and the interior vertices with the largest residual blocks there;
-//     or, if starts converged but only against the assignment, the count and a crease.
-//     kUndecided if candidates exist but no trace reached certificate_fold.
+//  5. No candidate: the evidence search. At each amplitude eps of evidence_amplitudes
+//     (largest first) and each driving crease, sign-respecting least squares (projected
+//     Gauss-Newton, NewtonOptions::sign_bounds: a valley stays >= 0, a mountain <= 0) from
+//     the first start scaled to eps, the driving crease held at +-eps. A converged point is
+//     a candidate (traced as in 3-4). Otherwise the least residual per amplitude is the
+//     evidence, and
+//       - kNotRigidlyFoldable (numerical evidence, is_proof false) only when the least
+//         residual at the largest amplitude is at least tolerances.evidence_floor AND it
+//         grows with the amplitude like an obstruction, residual ~ eps^p with
+//         p >= min_growth_exponent between the two largest amplitudes (a closure gap forced
+//         by the geometry scales with the fold; a search that stalled does not);
+//       - kUndecided otherwise: a least residual near the floor, or one that does not grow
+//         with the fold, is a search that stopped, not evidence of rigidity.
+//     The obstruction reported: the least residual (largest amplitude) and the interior
+//     vertices with the largest residual blocks there; the starts that converged only
+//     against the assignment, their count and a crease.
+//     kUndecided also if candidates exist but no trace reached certificate_fold.
 //
 // Units: radians; fold angles per edge with the FOLD sign (valley > 0, mountain < 0).
 // Limits: sheets with holes are rejected by ClosureSystem (std::runtime_error propagates);
@@ -77,6 +87,10 @@ struct GeneralVerdictOptions {
   int least_squares_iterations = 60; // Gauss-Newton steps of the obstruction search
   int least_squares_stall_window = 5;  // ... ended early on a plateau (NewtonOptions::stall_window)
   int singular_detection_limit = 600;  // bordered-determinant test only up to this many unknowns
+  // Evidence search (step 5): amplitudes (radians, largest first) and the least growth
+  // exponent of the least residual between the two largest that counts as an obstruction.
+  std::vector<double> evidence_amplitudes{0.1, 0.01, 0.001};
+  double min_growth_exponent = 0.5;
   // DOF-1 tracing: steps of at most 0.1 rad in any crease (a fixed arclength of 0.25 took
   // ~5,000 points, 23 s, on a 50 x 50 Miura); on small patterns this is about the old step.
   ContinuationOptions continuation = [] {
@@ -91,6 +105,25 @@ struct SingularPoint {
   Eigen::VectorXd angles;       // per-edge fold angles, linearly interpolated (radians)
   double driving_value = 0.0;   // driving crease's angle there (radians)
   double max_fold = 0.0;        // max |rho| there (radians)
+};
+
+// The least sign-respecting closure residual found at one fold amplitude (step 5).
+struct AmplitudeEvidence {
+  double amplitude = 0.0;       // |driving crease| held (radians)
+  double least_residual = 0.0;  // least ||r||_inf over the driving creases tried (radians)
+  int driving_edge = -1;        // where it was reached
+};
+
+// Which lettered creases a certificate leaves flat: strict foldability folds every one of
+// them; weak foldability lets some stay flat (|rho| <= flat_fraction x the largest fold).
+struct StrictnessReport {
+  bool strict = false;               // every M/V crease folds at the certificate
+  std::vector<int> flat_lettered;    // M/V creases that stay flat there (edge indices)
+  double flat_fraction = 1e-6;
+  // Interior degree-4 vertices where two straight crease lines cross with all four creases
+  // lettered: no motion from flat folds all four (straight_line_folds.hpp), a proof that the
+  // pattern is not strictly foldable.
+  std::vector<int> strict_obstruction_vertices;
 };
 
 struct GeneralVerdict {
@@ -112,11 +145,20 @@ struct GeneralVerdict {
   std::vector<SingularPoint> singular_points;
   Eigen::VectorXd certificate_angles;  // last valid point of the path (kRigidlyFoldable)
   double certificate_mismatch = -1.0;  // place_faces relative mismatch there
-  // Obstruction (kNotRigidlyFoldable).
+  // Strict or weak (kRigidlyFoldable): the lettered creases the certificate leaves flat.
+  StrictnessReport strictness;
+  // Evidence search (step 5; empty when a candidate came from the first search).
+  std::vector<AmplitudeEvidence> evidence;
+  double growth_exponent = 0.0;        // of the least residual between the two largest amplitudes
+  // Obstruction (kNotRigidlyFoldable, or kUndecided from the evidence search).
   double least_residual = -1.0;        // least ||r||_inf by Gauss-Newton with the driving crease held
   std::vector<std::pair<int, double>> worst_vertices;  // (pattern vertex, ||r_v||_2), largest first, at most 5
   double seconds = 0.0;
 };
+
+// The strictness of a folded state rho (per-edge fold angles, radians): the M/V creases of
+// the pattern (by letter, whether or not the verdict used the letters) that stay flat.
+StrictnessReport strictness_at(const CreasePattern& pattern, const Eigen::VectorXd& rho);
 
 // Inputs: a validated pattern and its topology (flat reference sheet, no holes).
 // Throws std::runtime_error for a sheet with holes (from ClosureSystem).

@@ -30,6 +30,9 @@ struct Tolerances {
   double at_fold_limit = 1e-9;
   // Face placement of a certificate: relative closure mismatch at most this.
   double placement_mismatch = 1e-10;
+  // A least closure residual below this is no evidence that a pattern cannot fold: a search
+  // that ends there stopped near its own floor (the general verdict answers "undecided").
+  double evidence_floor = 1e-9;
   // Multiplier model: Kawasaki test of applicability (rad) and relative loop-gain defect
   // taken as 1.
   double flat_kawasaki = 1e-9;

@@ -264,6 +264,9 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
                                 std::to_string(n));
   for (int k : options.held_unknowns)
     if (k < 0 || k >= n) throw std::invalid_argument("newton_project: held unknown " + std::to_string(k) + " out of range");
+  if (!options.sign_bounds.empty() && static_cast<int>(options.sign_bounds.size()) != n)
+    throw std::invalid_argument("newton_project: sign_bounds has " + std::to_string(options.sign_bounds.size()) +
+                                " entries, expected " + std::to_string(n));
 
   NewtonResult result;
   result.x = x0;
@@ -293,6 +296,9 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
     if (!std::isfinite(step)) return result;
     if (step > options.max_step) dx *= options.max_step / step;
     result.x -= dx;
+    // Projection onto the sign box; held unknowns have dx = 0 and stay where they were.
+    for (int k = 0; k < static_cast<int>(options.sign_bounds.size()); ++k)
+      if (options.sign_bounds[k] * result.x[k] < 0) result.x[k] = 0.0;
     ++result.iterations;
     system.evaluate(result.x, r, J);
     rnorm = r.lpNorm<Eigen::Infinity>();

@@ -53,6 +53,11 @@ struct NewtonOptions {
   int stall_window = 0;
   double stall_factor = 0.9;
   FactorOrdering ordering = FactorOrdering::kDefault;
+  // Projected Gauss-Newton (empty: off). Per unknown, +1: kept >= 0, -1: kept <= 0, 0: free;
+  // after each step an unknown on the wrong side is set to 0 (the nearest point of the
+  // box). The sign-respecting least-squares search of the verdict (a valley stays >= 0, a
+  // mountain <= 0). A held unknown is never moved. Size num_unknowns() when not empty.
+  std::vector<int> sign_bounds;
 };
 
 struct NewtonResult {

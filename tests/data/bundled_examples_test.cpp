@@ -66,9 +66,15 @@ TEST(GeneratorCli, WritesEveryKindAndBundle) {
     run_command(cli() + " generate miura --rows 2 --cols 2 --fold-deg 40 --out " + out);
     return read_fold(out);
   }();
-  int with_angle = 0;
-  for (const auto& r : folded.fold_angles) with_angle += r.has_value();
-  EXPECT_EQ(with_angle, 4);  // the interior creases of a 2x2 Miura
+  // The interior creases of a 2x2 Miura carry their angle; B/F/J edges are written as 0
+  // (FOLD 1.2 numbers, no null).
+  int creases_with_angle = 0;
+  for (int e = 0; e < folded.num_edges(); ++e) {
+    const bool crease = folded.assignments[e] == Assignment::Mountain || folded.assignments[e] == Assignment::Valley;
+    if (crease) creases_with_angle += folded.fold_angles[e].has_value() && *folded.fold_angles[e] != 0.0;
+    else if (folded.fold_angles[e]) EXPECT_EQ(*folded.fold_angles[e], 0.0) << "edge " << e;
+  }
+  EXPECT_EQ(creases_with_angle, 4);
 
   const auto bundle = run_command(cli() + " generate bundle --out-dir " + (dir / "bundle").string());
   EXPECT_EQ(bundle.status, 0) << bundle.err;

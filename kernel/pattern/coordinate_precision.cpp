@@ -1,0 +1,58 @@
+#include "kernel/pattern/coordinate_precision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+namespace rigidfold {
+namespace {
+
+// Fewest decimals d (0..17) whose decimal rounding of c reads back as c itself.
+int decimal_places(double c) {
+  if (c == 0.0 || !std::isfinite(c)) return 0;
+  char buf[64];
+  for (int d = 0; d <= 17; ++d) {
+    std::snprintf(buf, sizeof buf, "%.*f", d, c);
+    if (std::strtod(buf, nullptr) == c) return d;
+  }
+  return 17;
+}
+
+int magnitude(double c) { return c == 0.0 ? 0 : static_cast<int>(std::floor(std::log10(std::abs(c)))); }
+
+}  // namespace
+
+CoordinatePrecision coordinate_precision(const CreasePattern& p) {
+  CoordinatePrecision out;
+  // Stored coordinates may be normalised by a power of two (exact); the written numbers
+  // are the stored ones times 2^length_exponent, which is what the digits are counted on.
+  const double unit = std::ldexp(1.0, p.length_exponent);
+  int max_significant = 0, max_decimals = 0;
+  for (const Eigen::Vector3d& v : p.vertices)
+    for (int k = 0; k < 3; ++k) {
+      const double c = v[k] * unit;
+      if (c == 0.0) continue;
+      const int d = decimal_places(c);
+      max_decimals = std::max(max_decimals, d);
+      max_significant = std::max(max_significant, d + magnitude(c) + 1);
+    }
+  out.decimal_places = max_decimals;
+  out.significant_digits = max_significant;
+  out.rounded = max_significant <= 15;
+  out.vertex_rounding.assign(p.vertices.size(), 0.0);
+  for (std::size_t i = 0; i < p.vertices.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double c = p.vertices[i][k] * unit;
+      double u = std::max(0.5 * std::pow(10.0, -max_decimals),
+                          0.5 * std::pow(10.0, magnitude(c) - max_significant + 1));
+      if (c == 0.0) u = 0.5 * std::pow(10.0, -max_decimals);
+      u = std::max(u, std::ldexp(std::abs(c), -52)) / unit;  // back to stored units
+      out.vertex_rounding[i] = std::max(out.vertex_rounding[i], u);
+      out.max_rounding = std::max(out.max_rounding, u);
+    }
+  return out;
+}
+
+}  // namespace rigidfold

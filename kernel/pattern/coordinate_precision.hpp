@@ -1,0 +1,36 @@
+#pragma once
+// The precision a file's coordinates were written with, read off the numbers themselves
+// (issue 12, "tolerance from the input"): a pattern exported with 6 decimals carries sector
+// angles known to ~1e-6 and cannot be judged in exact arithmetic.
+//
+// Method: each coordinate c is given the fewest decimal places d (0..17) for which c is the
+// double nearest to round(c 10^d) / 10^d, and its significant digits s = d + floor(log10|c|) + 1.
+// A writer rounds either to a fixed number of decimals D (the largest d in the file) or to
+// a fixed number of significant digits S (the largest s); the rounding of coordinate c is
+// then at most half a unit in its last place under either reading, and the bound taken is
+// the larger of the two:
+//     u(c) = max(0.5 10^-D, 0.5 10^(floor(log10|c|) - S + 1)),
+// never below the double rounding 2^-52 |c|. A coordinate written with fewer places than
+// its neighbours (0.25 among 0.466968) is an exact value or rounded the same way; both
+// readings cover it.
+//
+// Units: the pattern's length unit (coordinates as stored in CreasePattern::vertices).
+#include <vector>
+
+#include "kernel/pattern/crease_pattern.hpp"
+
+namespace rigidfold {
+
+struct CoordinatePrecision {
+  int decimal_places = 0;        // D: the most decimals any coordinate needs
+  int significant_digits = 0;    // S: the most significant digits any coordinate needs
+  double max_rounding = 0.0;     // max over coordinates of u(c)
+  std::vector<double> vertex_rounding;  // per vertex: max u(c) over its three coordinates
+  // True when every coordinate needs at most 15 significant digits: the file was rounded
+  // (a full double needs 16-17 digits for most values).
+  bool rounded = false;
+};
+
+CoordinatePrecision coordinate_precision(const CreasePattern& pattern);
+
+}  // namespace rigidfold
