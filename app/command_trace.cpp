@@ -73,7 +73,9 @@ std::string branch_path(const std::string& path, int id, bool several) {
   return (p.parent_path() / (p.stem().string() + ".b" + std::to_string(id) + p.extension().string())).string();
 }
 
-std::string csv_text(const MotionBranch& b, int num_edges) {
+// Mismatch in the file's length units (a rescaled pattern, length_scale.hpp, reports as read).
+std::string csv_text(const MotionBranch& b, const CreasePattern& p) {
+  const int num_edges = p.num_edges();
   std::string s = "step,drive_deg,max_residual_rad,mismatch,events";
   for (int e = 0; e < num_edges; ++e) {
     s += ",e";
@@ -89,7 +91,7 @@ std::string csv_text(const MotionBranch& b, int num_edges) {
       ev += std::string(to_string(x.kind)) + ":e" + std::to_string(x.edge);
     }
     s += std::to_string(k + 1) + "," + round_trip_text(to_degrees(st.drive)) + "," + round_trip_text(st.residual) + "," +
-         round_trip_text(st.folded.max_mismatch) + "," + ev;
+         round_trip_text(to_file_units(p, st.folded.max_mismatch)) + "," + ev;
     for (int e = 0; e < num_edges; ++e) {
       s += ',';
       s += round_trip_text(to_degrees(st.rho[e]));
@@ -189,7 +191,8 @@ std::string nothing_traced_text(const MotionTrace& m) {
   return s;
 }
 
-void print_text(const std::string& file, const MotionTrace& m, const std::vector<std::pair<std::string, std::string>>& files) {
+void print_text(const std::string& file, const CreasePattern& p, const MotionTrace& m,
+                const std::vector<std::pair<std::string, std::string>>& files) {
   std::cout << file << ": model " << m.model_name << "\n";
   if (!m.note.empty()) std::cout << "  " << m.note << "\n";
   for (const MotionBranch& b : m.branches) {
@@ -199,7 +202,7 @@ void print_text(const std::string& file, const MotionTrace& m, const std::vector
       continue;
     }
     std::cout << ", " << b.steps.size() << " steps to " << degrees_text(b.reached) << " deg (" << b.stopped_by << ")\n";
-    std::cout << "    max closure residual " << b.max_residual << " rad, max face-placement mismatch " << b.max_mismatch
+    std::cout << "    max closure residual " << b.max_residual << " rad, max face-placement mismatch " << to_file_units(p, b.max_mismatch)
               << "\n";
     for (const MotionEvent& e : b.events)
       std::cout << "    step " << e.step << ": " << to_string(e.kind) << " at crease " << e.edge << " (drive "
@@ -270,7 +273,7 @@ void add_trace_command(CLI::App& app) {
           path = branch_path(base, b.id, true);
           outputs.add_output(flag, path);
         }
-        outputs.stage(path, flag == "--out" ? frames_text(b, p) : csv_text(b, p.num_edges()));
+        outputs.stage(path, flag == "--out" ? frames_text(b, p) : csv_text(b, p));
         if (std::find_if(files.begin(), files.end(), [&](const auto& f) { return f.first == path; }) == files.end())
           files.emplace_back(path, flag);
       }
@@ -304,7 +307,7 @@ void add_trace_command(CLI::App& app) {
       std::cout << j.dump(2) << "\n";
       return;
     }
-    print_text(a->pattern, m, files);
+    print_text(a->pattern, p, m, files);
   });
 }
 
