@@ -413,11 +413,12 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
   try {
     const ModelChoice c = choose_model(pattern, topology, options);
     r.model_choice = c.why;
+    std::optional<StraightLineAnalysis> lines;  // computed once, where a model needs it
     switch (c.model) {
       case FoldabilityModel::kGivenStateHoleClosure: given_state_report(pattern, topology, options, r); break;
       case FoldabilityModel::kMultiplierPropagation:
-        if (c.multiplier->verdict == Verdict::kRigidlyFoldable ||
-            straight_line_folds(pattern, topology, line_options(options)).crossing_vertices.empty()) {
+        if (c.multiplier->verdict != Verdict::kRigidlyFoldable) lines = straight_line_folds(pattern, topology, line_options(options));
+        if (!lines || lines->crossing_vertices.empty()) {
           multiplier_report(pattern, topology, options, *c.multiplier, r);
           break;
         }
@@ -428,8 +429,8 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
                           ") only rules out motions that fold every crease: the general model decides";
         [[fallthrough]];
       default: {
-        const StraightLineAnalysis lines = straight_line_folds(pattern, topology, line_options(options));
-        if (!lines.folds.empty() && !lines.strict_obstruction_vertices.empty()) {
+        if (!lines) lines = straight_line_folds(pattern, topology, line_options(options));
+        if (!lines->folds.empty() && !lines->strict_obstruction_vertices.empty()) {
           // Both questions are settled exactly: weakly foldable (a line folds alone), not
           // strictly (crossing lettered lines). The numerical search could add neither.
           r.model = FoldabilityModel::kGeneralLoopClosure;
@@ -440,7 +441,7 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
         } else {
           general_report(pattern, topology, options, r);
         }
-        straight_line_report(pattern, topology, options, lines, r);
+        straight_line_report(pattern, topology, options, *lines, r);
         break;
       }
     }

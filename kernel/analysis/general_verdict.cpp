@@ -47,6 +47,19 @@ std::vector<int> driving_creases(const ClosureSystem& sys, const Topology& t, in
   return out;
 }
 
+// A pseudo-random start: |x_i| in [start_min, start_max] radians, the sign of every M/V
+// crease following its letter, U creases either sign.
+Eigen::VectorXd signed_start(const ClosureSystem& sys, const std::vector<int>& sign, const GeneralVerdictOptions& opt,
+                             SplitMix64& rng) {
+  Eigen::VectorXd x0(sys.num_unknowns());
+  for (int i = 0; i < sys.num_unknowns(); ++i) {
+    const double mag = opt.start_min + (opt.start_max - opt.start_min) * rng.uniform();
+    const int sg = sign[sys.edge_of_unknown(i)];
+    x0[i] = (sg != 0 ? sg : (rng.uniform() < 0.5 ? -1.0 : 1.0)) * mag;
+  }
+  return x0;
+}
+
 struct Tracer {
   const ClosureSystem& sys;
   const GeneralVerdictOptions& opt;
@@ -159,13 +172,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   for (int e : drivers) {
     const int k = sys.unknown_of_edge(e);
     for (int s = 0; s < opt.starts_per_crease; ++s) {
-      Eigen::VectorXd x0(n);
-      for (int i = 0; i < n; ++i) {
-        const double mag = opt.start_min + (opt.start_max - opt.start_min) * rng.uniform();
-        const int sg = sign[sys.edge_of_unknown(i)];
-        const double dir = sg != 0 ? sg : (rng.uniform() < 0.5 ? -1.0 : 1.0);
-        x0[i] = dir * mag;
-      }
+      Eigen::VectorXd x0 = signed_start(sys, sign, opt, rng);
       x0[k] = (sign[e] != 0 ? sign[e] : 1) * opt.held_value;
       NewtonOptions nopt;
       nopt.tolerance = opt.tolerances.residual;
@@ -195,13 +202,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     SplitMix64 erng{opt.seed};
     std::vector<Eigen::VectorXd> unit_starts;  // one start per driving crease, magnitudes / start_max
     for (std::size_t d = 0; d < drivers.size(); ++d) {
-      Eigen::VectorXd x0(n);
-      for (int i = 0; i < n; ++i) {
-        const double mag = (opt.start_min + (opt.start_max - opt.start_min) * erng.uniform()) / opt.start_max;
-        const int sg = sign[sys.edge_of_unknown(i)];
-        x0[i] = (sg != 0 ? sg : (erng.uniform() < 0.5 ? -1.0 : 1.0)) * mag;
-      }
-      unit_starts.push_back(std::move(x0));
+      unit_starts.push_back(signed_start(sys, sign, opt, erng) / opt.start_max);
     }
     for (double eps : opt.evidence_amplitudes) {
       AmplitudeEvidence ev;
