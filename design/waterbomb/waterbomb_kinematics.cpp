@@ -34,7 +34,8 @@ FoldPair waterbomb_fold_angles(int n, double theta) {
   const double psi = std::atan2(std::cos(a), std::sin(a) * c);
   const double omega = std::atan2(std::fabs(c), std::cos(a) * s);
   // |pi - 2 theta| is exact in floating point up to one rounding (no cancellation in a cosine).
-  return {-std::fabs(kPi - 2.0 * theta), 2.0 * (psi + omega) - kPi};
+  // 0.0 - |.| so that flat gives +0, not -0.
+  return {0.0 - std::fabs(kPi - 2.0 * theta), 2.0 * (psi + omega) - kPi};
 }
 
 FoldPair waterbomb_fold_angle_derivatives(int n, double theta, int side) {

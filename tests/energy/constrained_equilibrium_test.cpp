@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <random>
 
 #include "data/generators/waterbomb.hpp"
@@ -48,6 +50,12 @@ struct Base {
     return x;
   }
 };
+
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3e", v);
+  return buf;
+}
 
 // Largest spread of the mountain (valley) fold angles: 0 for a symmetric state.
 double asymmetry(const Base& b, const Eigen::VectorXd& rho) {
@@ -100,6 +108,11 @@ TEST(EnergyEquilibrium, Fig29SecondStableStateWithoutSymmetry) {
       EXPECT_NEAR(eq.edge_angles[e], want, 1e-9) << "edge " << e << " seed " << seed;
     }
     EXPECT_NEAR(eq.energy, closed.energy, 1e-9 * closed.energy);
+    // The measured gaps, in the XML report (--gtest_output=xml) for the closing note.
+    RecordProperty("angle_gap_rad_seed" + std::to_string(seed),
+                   sci((eq.edge_angles - b.per_edge(closed.angles)).lpNorm<Eigen::Infinity>()));
+    RecordProperty("energy_gap_rel_seed" + std::to_string(seed),
+                   sci(std::fabs(eq.energy - closed.energy) / closed.energy));
     EXPECT_NEAR(eq.energy, waterbomb::waterbomb_energy(ws, closed.theta), 1e-9 * closed.energy);
   }
   // Started near the rest state, the minimiser returns to it (state 1, zero energy).

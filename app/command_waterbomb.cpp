@@ -1,0 +1,128 @@
+// rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
+// Bistability of the symmetric waterbomb base (seed 004): every equilibrium of the spring
+// energy along the 1-DOF symmetric path, each checked (loop closure, dV/dtheta = 0, and
+// stationarity and stability on the unrestricted 2n-crease problem) before it is printed.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "app/commands.hpp"
+#include "design/waterbomb/waterbomb_bistability.hpp"
+#include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/input_error.hpp"
+
+namespace rigidfold::cli {
+namespace {
+
+const char* kind_name(waterbomb::EquilibriumKind k) {
+  switch (k) {
+    case waterbomb::EquilibriumKind::kMinimum: return "minimum";
+    case waterbomb::EquilibriumKind::kMaximum: return "maximum";
+    case waterbomb::EquilibriumKind::kCuspMaximum: return "cusp maximum (flat state)";
+    case waterbomb::EquilibriumKind::kCuspMinimum: return "cusp minimum (flat state)";
+  }
+  return "?";
+}
+
+// JSON number or null (NaN has no JSON form: the flat cusp has no reduced Hessian).
+nlohmann::ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+void add_waterbomb_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("waterbomb", "Waterbomb base bistability (seed 004): stable states and the flat barrier");
+  struct Args {
+    int n = 0;
+    double theta0_deg = 0, k_ratio = 1, k_m = 1, k_v = 1;
+    bool json = false;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180")->required();
+  cmd->add_option("--theta0-deg", a->theta0_deg,
+                  "rest state: angle between a valley crease and the axis, degrees in [0, 180 - 180/n]")
+      ->required();
+  auto* ratio = cmd->add_option("--k-ratio", a->k_ratio, "k_m / k_v with k_v = 1 (>= 0)");
+  auto* km = cmd->add_option("--k-m", a->k_m, "stiffness of each mountain crease (>= 0, energy / rad^2)");
+  auto* kv = cmd->add_option("--k-v", a->k_v, "stiffness of each valley crease (>= 0, energy / rad^2)");
+  ratio->excludes(km)->excludes(kv);
+  km->needs(kv);
+  kv->needs(km);
+  cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
+  cmd->callback([a, ratio] {
+    if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
+    const double limit_deg = 180.0 - 180.0 / a->n;
+    if (!std::isfinite(a->theta0_deg) || a->theta0_deg < 0.0 || a->theta0_deg > limit_deg)
+      throw InputError("--theta0-deg", "must be in [0, " + std::to_string(limit_deg) + "] degrees for n = " +
+                                           std::to_string(a->n));
+    double k_m = a->k_m, k_v = a->k_v;
+    if (ratio->count() > 0) {
+      if (!std::isfinite(a->k_ratio) || a->k_ratio < 0.0) throw InputError("--k-ratio", "must be a finite number >= 0");
+      k_m = a->k_ratio;
+      k_v = 1.0;
+    }
+    if (!std::isfinite(k_m) || k_m < 0.0) throw InputError("--k-m", "must be a finite number >= 0");
+    if (!std::isfinite(k_v) || k_v < 0.0) throw InputError("--k-v", "must be a finite number >= 0");
+    if (k_m == 0.0 && k_v == 0.0) throw InputError("--k-m", "at least one stiffness must be > 0");
+    // Clamp against the last-bit rounding of the degree conversion at the upper limit.
+    const double theta0 = std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
+    // Every number below passed its check in waterbomb_bistability (NoAnswerError -> exit 3).
+    const waterbomb::WaterbombBistability r = waterbomb::waterbomb_bistability(a->n, theta0, k_m, k_v);
+
+    nlohmann::ordered_json j;
+    j["n"] = a->n;
+    j["theta0_deg"] = a->theta0_deg;
+    j["k_m"] = k_m;
+    j["k_v"] = k_v;
+    j["rest"] = {{"gamma_m_deg", to_degrees(r.springs.rest.gamma_m)}, {"gamma_v_deg", to_degrees(r.springs.rest.gamma_v)}};
+    j["theta_limit_deg"] = limit_deg;
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& e : r.equilibria) {
+      nlohmann::ordered_json s;
+      s["kind"] = kind_name(e.path.kind);
+      s["theta_deg"] = to_degrees(e.path.theta);
+      s["gamma_m_deg"] = to_degrees(e.path.angles.gamma_m);
+      s["gamma_v_deg"] = to_degrees(e.path.angles.gamma_v);
+      s["energy"] = e.path.energy;
+      s["at_validity_limit"] = e.path.at_validity_limit;
+      s["closure_residual_rad"] = e.closure_residual;
+      s["slope_residual"] = e.path.slope_residual;
+      if (e.path.kind == waterbomb::EquilibriumKind::kCuspMaximum || e.path.kind == waterbomb::EquilibriumKind::kCuspMinimum) {
+        s["slope_below"] = e.path.slope_below;
+        s["slope_above"] = e.path.slope_above;
+      }
+      s["stationarity_residual"] = e.stationarity_residual;
+      s["min_reduced_hessian_eigenvalue"] = number_or_null(e.min_reduced_eigenvalue);
+      s["stable"] = e.path.kind == waterbomb::EquilibriumKind::kMinimum && !e.path.at_validity_limit && e.stable_unrestricted;
+      list.push_back(s);
+    }
+    j["equilibria"] = list;
+    if (a->json) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    char line[320];
+    std::snprintf(line, sizeof line, "waterbomb base n = %d, rest theta0 = %.12g deg (gamma_m0 = %.12g, gamma_v0 = %.12g deg), k_m = %.12g, k_v = %.12g\n",
+                  a->n, a->theta0_deg, to_degrees(r.springs.rest.gamma_m), to_degrees(r.springs.rest.gamma_v), k_m, k_v);
+    std::cout << line;
+    for (const auto& s : list) {
+      std::snprintf(line, sizeof line, "  %-26s theta = %.12g deg  (gamma_m, gamma_v) = (%.12g, %.12g) deg  energy %.12g%s%s\n",
+                    s["kind"].get<std::string>().c_str(), s["theta_deg"].get<double>(), s["gamma_m_deg"].get<double>(),
+                    s["gamma_v_deg"].get<double>(), s["energy"].get<double>(), s["stable"].get<bool>() ? "  STABLE" : "",
+                    s["at_validity_limit"].get<bool>() ? "  (on a contact limit)" : "");
+      std::cout << line;
+      if (!s["min_reduced_hessian_eigenvalue"].is_null()) {
+        std::snprintf(line, sizeof line, "      closure %.1e rad, dV/dtheta %.1e, unrestricted stationarity %.1e, min reduced Hessian eigenvalue %.6g\n",
+                      s["closure_residual_rad"].get<double>(), s["slope_residual"].get<double>(),
+                      s["stationarity_residual"].get<double>(), s["min_reduced_hessian_eigenvalue"].get<double>());
+        std::cout << line;
+      }
+    }
+  });
+}
+
+}  // namespace rigidfold::cli

@@ -1,0 +1,69 @@
+// `rigidfold waterbomb`: JSON with round-trip numbers that agree with the library, stable
+// states that close their loop, and exit 2 naming the flag on bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "design/waterbomb/waterbomb_bistability.hpp"
+#include "kernel/math/angle_units.hpp"
+#include "kernel/vertex/vertex_closure.hpp"
+#include "tests/support/run_command.hpp"
+
+namespace rigidfold {
+namespace {
+
+TEST(WaterbombCli, JsonMatchesLibraryAndCloses) {
+  const auto r = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --k-ratio 1.5 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto lib = waterbomb::waterbomb_bistability(4, to_radians(60.0), 1.5, 1.0);
+  ASSERT_EQ(j["equilibria"].size(), lib.equilibria.size());
+  int stable = 0;
+  for (std::size_t i = 0; i < lib.equilibria.size(); ++i) {
+    const auto& e = j["equilibria"][i];
+    // Full precision: the printed numbers are the library's doubles.
+    EXPECT_EQ(e["theta_deg"].get<double>(), to_degrees(lib.equilibria[i].path.theta));
+    EXPECT_EQ(e["energy"].get<double>(), lib.equilibria[i].path.energy);
+    const double gm = to_radians(e["gamma_m_deg"].get<double>()), gv = to_radians(e["gamma_v_deg"].get<double>());
+    std::vector<double> sectors(8, kPi / 4), rho(8);
+    for (int k = 0; k < 8; ++k) rho[k] = k % 2 ? gm : gv;
+    EXPECT_LT(vertex_closure_residual(sectors, rho).norm(), 1e-12);
+    if (e["stable"].get<bool>()) {
+      ++stable;
+      EXPECT_GT(e["min_reduced_hessian_eigenvalue"].get<double>(), 0.0);
+    }
+  }
+  EXPECT_EQ(stable, 2);
+}
+
+TEST(WaterbombCli, TextNamesStableStates) {
+  const auto r = test::run_command(test::cli() + " waterbomb --n 3 --theta0-deg 50 --k-m 2 --k-v 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("STABLE"), std::string::npos);
+  EXPECT_NE(r.out.find("cusp maximum"), std::string::npos);
+}
+
+TEST(WaterbombCli, BadInputExitsTwoNamingTheFlag) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--n 2 --theta0-deg 60", "--n"},
+      {"--n 4 --theta0-deg 135.5", "--theta0-deg"},
+      {"--n 4 --theta0-deg -1", "--theta0-deg"},
+      {"--n 4 --theta0-deg nan", "--theta0-deg"},
+      {"--n 4 --theta0-deg 60 --k-m -1 --k-v 1", "--k-m"},
+      {"--n 4 --theta0-deg 60 --k-m 1 --k-v inf", "--k-v"},
+      {"--n 4 --theta0-deg 60 --k-ratio -0.5", "--k-ratio"},
+      {"--n 4 --theta0-deg 60 --k-ratio 1 --k-m 1 --k-v 1", "--k-ratio"},
+  };
+  for (const auto& [flags, name] : cases) {
+    const auto r = test::run_command(test::cli() + " waterbomb " + flags);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_NE(r.err.find(name), std::string::npos) << flags << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << flags;
+  }
+}
+
+}  // namespace
+}  // namespace rigidfold
