@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "kernel/energy/crease_stiffness.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 
@@ -97,6 +98,22 @@ TEST(WaterbombBistability, SymmetricMinimaAreUnrestrictedMinima) {
         }
       }
   EXPECT_GE(checked, 2 * 5 * 3 * 3 - 5);  // nearly every case is bistable
+}
+
+// Seed 004 Table 2.2, predicted row: the rest state (-76, 32) deg is theta0 = 52 deg; the
+// joints have the Table 2.1 stiffness (equal k). The seed reads state 2 off its energy plot
+// as (-24, 57) deg; the digest (section 3, note 3) accepts +-1 deg in gamma_m1 (theta read to
+// +-0.5 deg, gamma_m' = -2) and +-2 deg in gamma_v1.
+TEST(WaterbombBistability, Table22PredictedStates) {
+  const double k = flexure_stiffness(93e9, 50e-3, 0.02032e-3, 0.714e-3);
+  const auto r = waterbomb::waterbomb_bistability(4, to_radians(52.0), k, k);
+  EXPECT_NEAR(to_degrees(r.springs.rest.gamma_m), -76.0, 1e-12);
+  EXPECT_NEAR(to_degrees(r.springs.rest.gamma_v), 32.0, 0.5);
+  const auto stable = r.stable_states();
+  ASSERT_EQ(stable.size(), 2u);
+  EXPECT_NEAR(to_degrees(stable[1].path.angles.gamma_m), -24.0, 1.0);
+  EXPECT_NEAR(to_degrees(stable[1].path.angles.gamma_v), 57.0, 2.0);
+  EXPECT_GT(stable[1].min_reduced_eigenvalue, 0.0);
 }
 
 TEST(WaterbombBistability, BadInputNamesTheParameter) {
