@@ -1,0 +1,185 @@
+#include "kernel/energy/vertex_height_control.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "kernel/closure/closure_second_order.hpp"
+#include "kernel/math/so3.hpp"
+
+namespace rigidfold {
+
+namespace {
+
+struct FanGeometry {
+  std::vector<Eigen::Vector3d> axis;  // u_j, body frame
+  Eigen::Vector3d mean_normal = Eigen::Vector3d::Zero();
+};
+
+FanGeometry fan_geometry(const Fan& fan, const Eigen::VectorXd& rho) {
+  FanGeometry g;
+  Eigen::Matrix3d P = Eigen::Matrix3d::Identity();
+  for (std::size_t j = 0; j < fan.edges.size(); ++j) {
+    g.axis.push_back(P.col(0));
+    const Eigen::Matrix3d F = P * rot_x(rho[fan.edges[j]]);
+    g.mean_normal += F.col(2);  // normal of sector j's face
+    P = F * rot_z(fan.sectors[j]);
+  }
+  return g;
+}
+
+}  // namespace
+
+HeightControlledEquilibrium vertex_height_equilibrium(const CreasePattern& pattern, const ClosureSystem& system,
+                                                      const Topology& topology, const CreaseSprings& springs,
+                                                      const VertexHeightLoad& load, const Eigen::VectorXd& x0,
+                                                      const HeightControlOptions& options) {
+  const int nx = system.num_unknowns();
+  if (x0.size() != nx) throw std::invalid_argument("vertex_height_equilibrium: x0 needs num_unknowns() entries");
+  if (springs.stiffness.size() != system.num_edges() || springs.rest_angles.size() != system.num_edges())
+    throw std::invalid_argument("vertex_height_equilibrium: springs need one entry per edge");
+  bool has_block = false;
+  for (int k = 0; k < system.num_vertices(); ++k) has_block = has_block || system.vertex_of_block(k) == load.vertex;
+  if (!has_block) throw std::invalid_argument("vertex_height_equilibrium: the vertex has no closure rows");
+  const Fan& fan = topology.stars[load.vertex].fans.at(0);
+  const int d = static_cast<int>(fan.edges.size());
+  std::vector<int> slot_unknown(d);
+  for (int j = 0; j < d; ++j) slot_unknown[j] = system.unknown_of_edge(fan.edges[j]);
+  std::vector<int> support_slot;
+  std::vector<double> length;
+  for (int e : load.support_edges) {
+    const auto it = std::find(fan.edges.begin(), fan.edges.end(), e);
+    if (it == fan.edges.end()) throw std::invalid_argument("vertex_height_equilibrium: support edge not at the vertex");
+    support_slot.push_back(static_cast<int>(it - fan.edges.begin()));
+    const auto& ev = pattern.edges[e];
+    length.push_back((pattern.vertices[ev[0]] - pattern.vertices[ev[1]]).norm());
+  }
+  const int ns = static_cast<int>(support_slot.size());
+  const int mr = system.num_rows();
+  const int N = nx + 3, M = mr + ns + 1;
+  const double kmax = springs.stiffness.size() ? std::max(springs.stiffness.maxCoeff(), 1e-300) : 1.0;
+
+  HeightControlledEquilibrium out;
+  Eigen::VectorXd x = x0;
+  Eigen::Vector3d nu = fan_geometry(fan, system.edges_from_unknowns(x)).mean_normal.normalized();
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(M);  // (lambda, mu, kappa)
+  Eigen::MatrixXd A(M, N), H(N, N);
+  Eigen::VectorXd c(M), gradL(N);
+
+  // Constraint rows, their Jacobian A, and (with the current w) the Lagrangian's gradient
+  // and Hessian at (x, nu).
+  auto assemble = [&](bool with_hessian) {
+    const Eigen::VectorXd rho = system.edges_from_unknowns(x);
+    const FanGeometry g = fan_geometry(fan, rho);
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> J;
+    system.evaluate(x, r, J);
+    A.setZero();
+    A.topLeftCorner(mr, nx) = Eigen::MatrixXd(J);
+    c.head(mr) = r;
+    Eigen::VectorXd gE(nx);
+    const Eigen::VectorXd ge = crease_energy_gradient(springs, rho);
+    for (int k = 0; k < nx; ++k) gE[k] = ge[system.edge_of_unknown(k)];
+    if (with_hessian) {
+      H.setZero();
+      H.topLeftCorner(nx, nx) = closure_weighted_hessian(system, topology, x, w.head(mr));
+      for (int k = 0; k < nx; ++k) H(k, k) += springs.stiffness[system.edge_of_unknown(k)];
+      H.bottomRightCorner(3, 3) += w[M - 1] * Eigen::Matrix3d::Identity();
+    }
+    for (int s = 0; s < ns; ++s) {
+      const int i = support_slot[s];
+      const double L = length[s], mu = w[mr + s];
+      const Eigen::Vector3d& ui = g.axis[i];
+      c[mr + s] = L * nu.dot(ui) + load.height;
+      A.block<1, 3>(mr + s, nx) = L * ui.transpose();
+      for (int j = 0; j < i; ++j) {
+        const int cj = slot_unknown[j];
+        if (cj < 0) continue;
+        const Eigen::Vector3d dj = g.axis[j].cross(ui);  // du_i / drho_j
+        A(mr + s, cj) += L * nu.dot(dj);
+        if (!with_hessian) continue;
+        H.block<1, 3>(cj, nx) += mu * L * dj.transpose();
+        H.block<3, 1>(nx, cj) += mu * L * dj;
+        for (int k = j; k < i; ++k) {
+          const int ck = slot_unknown[k];
+          if (ck < 0) continue;
+          const Eigen::Vector3d& uj = g.axis[j];
+          const Eigen::Vector3d& uk = g.axis[k];
+          // d2 u_i / drho_j drho_k, j <= k < i (u_k does not depend on rho_k).
+          const Eigen::Vector3d second = (j == k) ? Eigen::Vector3d(uj.cross(uj.cross(ui)))
+                                                  : Eigen::Vector3d(uj.cross(uk).cross(ui) + uk.cross(uj.cross(ui)));
+          const double v = mu * L * nu.dot(second);
+          H(cj, ck) += v;
+          if (ck != cj) H(ck, cj) += v;
+        }
+      }
+    }
+    c[M - 1] = 0.5 * (nu.squaredNorm() - 1.0);
+    A.block<1, 3>(M - 1, nx) = nu.transpose();
+    gradL.setZero();
+    gradL.head(nx) = gE;
+    gradL += A.transpose() * w;
+  };
+
+  // Least-squares multipliers for the start.
+  assemble(false);
+  {
+    Eigen::VectorXd gE = gradL - A.transpose() * w;
+    w = A.transpose().completeOrthogonalDecomposition().solve(-gE);
+  }
+  int it = 0;
+  for (; it <= options.max_iterations; ++it) {
+    assemble(true);
+    out.stationarity_residual = gradL.lpNorm<Eigen::Infinity>();
+    out.constraint_residual = c.lpNorm<Eigen::Infinity>();
+    if (out.stationarity_residual <= options.tolerance * kmax && out.constraint_residual <= options.tolerance) {
+      out.converged = true;
+      break;
+    }
+    if (it == options.max_iterations) break;
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N + M, N + M);
+    K.topLeftCorner(N, N) = H;
+    K.topRightCorner(N, M) = A.transpose();
+    K.bottomLeftCorner(M, N) = A;
+    Eigen::VectorXd rhs(N + M);
+    rhs << -gradL, -c;
+    const Eigen::VectorXd step = K.completeOrthogonalDecomposition().solve(rhs);
+    Eigen::VectorXd dz = step.head(N);
+    const double cap = 0.2, norm = dz.lpNorm<Eigen::Infinity>();
+    const double t = norm > cap ? cap / norm : 1.0;
+    x += t * dz.head(nx);
+    nu += t * dz.tail(3);
+    w += t * step.tail(M);
+  }
+  out.iterations = it;
+  if (!out.converged) out.message = "no convergence of the KKT Newton iteration";
+  out.x = x;
+  out.edge_angles = system.edges_from_unknowns(x);
+  out.plane_normal = nu;
+  out.support_reactions = w.segment(mr, ns);
+  out.force = -out.support_reactions.sum();
+  out.energy = crease_energy(springs, out.edge_angles);
+
+  // Stability: H reduced to null(A).
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  int rank = 0;
+  while (rank < s.size() && s[rank] > options.rank_tolerance * s[0]) ++rank;
+  const Eigen::MatrixXd Z = svd.matrixV().rightCols(N - rank);
+  out.tangent_dimension = static_cast<int>(Z.cols());
+  if (Z.cols() > 0) {
+    Eigen::MatrixXd Hr = Z.transpose() * H * Z;
+    Hr = 0.5 * (Hr + Hr.transpose());
+    out.reduced_hessian_eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Hr).eigenvalues();
+    out.min_eigenvalue = out.reduced_hessian_eigenvalues[0];
+  } else {
+    out.min_eigenvalue = INFINITY;
+  }
+  out.stable = out.converged && out.min_eigenvalue > options.stability_tolerance * kmax;
+  return out;
+}
+
+}  // namespace rigidfold
