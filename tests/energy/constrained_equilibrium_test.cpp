@@ -136,12 +136,10 @@ TEST(EnergyEquilibrium, StableStatesListsBothStates) {
   EXPECT_NEAR(states[1].energy, far_minimum(ws).energy, 1e-9 * states[1].energy);
 }
 
-// analyse_equilibrium at a non-equilibrium point of the manifold reports a stationarity
-// residual that Newton then removes; the reduced Hessian's smallest eigenvalue agrees with
-// the second difference of the energy along the symmetric path where that path is the
-// softest direction... checked here only through its sign at a saddle-free point: at the
-// flat-side maximum of V(theta) none exists for equal k, so compare to the path curvature
-// instead at state 2 (the path is one tangent direction: eigmin <= path curvature).
+// The reduced Hessian against an independent second derivative: the symmetric path through
+// state 2 is one curve on the manifold, so by Rayleigh eigmin |t|^2 <= V''(theta) (t the
+// path tangent; exact at a KKT point, where the multipliers carry the manifold's curvature).
+// Off the equilibrium the stationarity residual (the projected gradient) is not 0.
 TEST(EnergyEquilibrium, ReducedHessianBoundsPathCurvature) {
   const int n = 4;
   const auto ws = waterbomb::springs_at_rest_theta(n, to_radians(60.0), 1.0, 1.0);
