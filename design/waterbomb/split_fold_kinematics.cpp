@@ -1,6 +1,7 @@
 #include "design/waterbomb/split_fold_kinematics.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
@@ -41,6 +42,67 @@ FoldPair split_fold_angles_printed(int n, double b, double theta) {
   const double eta = 2.0 * std::atan((-h3 + std::sqrt(std::fmax(disc, 0.0))) / (h1 - h2));  // (3.21)
   const double gv = theta <= kPi / 2 ? phi - eta : phi + eta;                                // (3.19)
   return {gm, gv};
+}
+
+namespace {
+// The argument of eq. (3.16): cos f.
+double cos_f(int n, double b, double theta) {
+  const double beta = 2.0 * kPi / n;
+  const double ct = std::cos(theta), st = std::sin(theta);
+  const double d = std::acos(std::fmin(1.0, ct * ct + st * st * std::cos(beta)));
+  const double xi = std::acos(std::fmax(-1.0, std::fmin(1.0, std::tan(d / 2) / std::tan(theta))));
+  const double cb2 = std::cos(b / 2), sb2 = std::sin(b / 2);
+  return cb2 * cb2 * std::cos(d) + std::sin(b) * std::sin(d) * std::sin(xi) +
+         sb2 * sb2 * (std::cos(xi) * std::cos(xi) - std::cos(d) * std::sin(xi) * std::sin(xi));
+}
+}  // namespace
+
+SplitFoldRange split_fold_range(int n, double b) {
+  split_fold_angles_printed(n, b, kPi / 2 - 0.1);  // checks n and b
+  // Golden section for the maximum of cos f on (0, pi/2).
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double lo = 1e-9, hi = kPi / 2 - 1e-9;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = cos_f(n, b, x1), f2 = cos_f(n, b, x2);
+  for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+    if (f1 < f2) {
+      lo = x1; x1 = x2; f1 = f2;
+      x2 = lo + g * (hi - lo); f2 = cos_f(n, b, x2);
+    } else {
+      hi = x2; x2 = x1; f2 = f1;
+      x1 = hi - g * (hi - lo); f1 = cos_f(n, b, x1);
+    }
+  }
+  SplitFoldRange r;
+  // Just above the contact: below it (3.19) returns the reflected, non-physical gamma_v, and
+  // the golden section places the maximum only to ~1e-8 rad.
+  r.theta_min = 0.5 * (lo + hi) + 1e-7;
+  // Far side: the mirror of the theta* state, (gamma_m, gamma_v) = (-gamma_v*, -gamma_m*).
+  // Matched on gamma_v = -gamma_m(theta*): gamma_m is smooth at theta* while gamma_v has a
+  // square-root onset there, so gamma_v(theta*) is not resolved from theta* in double.
+  const double target = -split_fold_angles_printed(n, b, r.theta_min).gamma_m;
+  double a = kPi / 2 + 1e-9, c = kPi - 1e-9;
+  for (int it = 0; it < 200 && c - a > 1e-15; ++it) {
+    const double mid = 0.5 * (a + c);
+    double gv;
+    try {
+      gv = split_fold_angles_printed(n, b, mid).gamma_v;
+    } catch (const InputError&) {
+      c = mid;  // past the printed forms' own domain: beyond the contact
+      continue;
+    }
+    (gv < target ? a : c) = mid;
+  }
+  r.theta_max = 0.5 * (a + c);
+  return r;
+}
+
+FoldPair split_fold_angles(int n, double b, double theta) {
+  const SplitFoldRange r = split_fold_range(n, b);
+  if (!std::isfinite(theta) || theta < r.theta_min || theta > r.theta_max)
+    throw InputError("theta", "outside the split-fold model's contact limits [" + std::to_string(to_degrees(r.theta_min)) +
+                                  ", " + std::to_string(to_degrees(r.theta_max)) + "] deg (non-adjacent facets touch)");
+  return split_fold_angles_printed(n, b, theta);
 }
 
 }  // namespace rigidfold::waterbomb

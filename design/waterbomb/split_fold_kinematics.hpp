@@ -8,9 +8,8 @@
 //
 // Eqs (3.13)-(3.30) as printed. Validity (digest section 2.3, not in the seed): the forms hold
 // for theta* <= theta <= theta_max only, where non-adjacent facets touch (f = 0 at theta*);
-// below theta* eq. (3.16) reflects f through 0 and gamma_v turns non-physical. This function
-// refuses theta where the acos/sqrt arguments leave their domain (InputError "theta") but
-// does NOT yet locate theta* and theta_max: callers must check contact themselves.
+// below theta* eq. (3.16) reflects f through 0 and gamma_v turns non-physical.
+// split_fold_range locates both limits; split_fold_angles refuses theta outside them.
 #include "design/waterbomb/waterbomb_kinematics.hpp"
 
 namespace rigidfold::waterbomb {
@@ -18,5 +17,23 @@ namespace rigidfold::waterbomb {
 // Inputs: n >= 3, b in (0, pi/n) (radians), theta in (0, pi) (radians).
 // Throws InputError naming "n", "b" or "theta".
 FoldPair split_fold_angles_printed(int n, double b, double theta);
+
+// Contact limits of the split-fold model (radians):
+//   theta_min = theta*: the argument of eq. (3.16) reaches 1 (f = 0, non-adjacent facets
+//     touch), found as its maximum on (0, pi/2) by golden section (error ~1e-8 rad: the
+//     argument is 1 - O((theta - theta*)^2) there), returned 1e-7 rad above it so that the
+//     forms give the physical branch there (the printed gamma_v jumps below theta*);
+//   theta_max: the mirror contact on the far side, where gamma_v = -gamma_m(theta*) (the path
+//     is symmetric about gamma_v = -gamma_m), by bisection; gamma_v rises monotonically
+//     from flat there.
+struct SplitFoldRange {
+  double theta_min = 0.0;
+  double theta_max = 0.0;
+};
+SplitFoldRange split_fold_range(int n, double b);
+
+// The printed forms, refusing theta outside split_fold_range (InputError "theta", with the
+// range in degrees).
+FoldPair split_fold_angles(int n, double b, double theta);
 
 }  // namespace rigidfold::waterbomb

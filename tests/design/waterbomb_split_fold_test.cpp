@@ -44,3 +44,35 @@ TEST(WaterbombSplitFold, PrintedFormsCloseTheLoop) {
 
 }  // namespace
 }  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// Contact limits against the digest's table (seed-004 digest section 2.3, derived and checked
+// there by three independent constructions; 3 decimals in degrees, 2 in the angles).
+TEST(WaterbombSplitFold, ContactLimitsMatchDigestTable) {
+  struct Row {
+    int n;
+    double b, theta_min, gm_min, gv_min, theta_max;
+  };
+  for (const Row& row : {Row{3, 5, 1.444, -91.75, 33.08, 122.151}, Row{4, 5, 2.502, -92.98, 48.95, 136.528},
+                         Row{10, 5, 7.722, -100.90, 83.35, 159.124}, Row{4, 20, 10.156, -112.22, 70.15, 142.753}}) {
+    const auto r = waterbomb::split_fold_range(row.n, to_radians(row.b));
+    EXPECT_NEAR(to_degrees(r.theta_min), row.theta_min, 0.0005 + 1e-6) << row.n << " " << row.b;
+    EXPECT_NEAR(to_degrees(r.theta_max), row.theta_max, 0.0005 + 1e-6) << row.n << " " << row.b;
+    const auto g = waterbomb::split_fold_angles_printed(row.n, to_radians(row.b), r.theta_min);
+    EXPECT_NEAR(to_degrees(g.gamma_m), row.gm_min, 0.005 + 1e-6);
+    // gamma_v at theta* is the table's limit from above; the printed gamma_v has a square-root
+    // onset there, so only its mirror, gamma_v at theta_max, is compared.
+    const auto gmax = waterbomb::split_fold_angles_printed(row.n, to_radians(row.b), r.theta_max);
+    EXPECT_NEAR(to_degrees(gmax.gamma_m), -row.gv_min, 0.01);
+    EXPECT_NEAR(to_degrees(gmax.gamma_v), -row.gm_min, 0.005 + 1e-6);
+    // Refused outside, accepted inside.
+    EXPECT_THROW(waterbomb::split_fold_angles(row.n, to_radians(row.b), r.theta_min - 1e-3), InputError);
+    EXPECT_THROW(waterbomb::split_fold_angles(row.n, to_radians(row.b), r.theta_max + 1e-3), InputError);
+    EXPECT_NO_THROW(waterbomb::split_fold_angles(row.n, to_radians(row.b), kPi / 2 + 0.2));
+  }
+}
+
+}  // namespace
+}  // namespace rigidfold
