@@ -33,96 +33,144 @@ FanGeometry fan_geometry(const Fan& fan, const Eigen::VectorXd& rho) {
 
 }  // namespace
 
-HeightControlledEquilibrium vertex_height_equilibrium(const CreasePattern& pattern, const ClosureSystem& system,
-                                                      const Topology& topology, const CreaseSprings& springs,
-                                                      const VertexHeightLoad& load, const Eigen::VectorXd& x0,
-                                                      const HeightControlOptions& options) {
-  const int nx = system.num_unknowns();
-  if (x0.size() != nx) throw std::invalid_argument("vertex_height_equilibrium: x0 needs num_unknowns() entries");
+namespace {
+
+// The load's geometry on the vertex fan, checked once.
+struct LoadSetup {
+  const Fan* fan = nullptr;
+  std::vector<int> slot_unknown, support_slot;
+  std::vector<double> length;
+  int nx = 0, ns = 0, mr = 0, N = 0, M = 0;
+};
+
+LoadSetup make_setup(const CreasePattern& pattern, const ClosureSystem& system, const Topology& topology,
+                     const CreaseSprings& springs, const VertexHeightLoad& load) {
   if (springs.stiffness.size() != system.num_edges() || springs.rest_angles.size() != system.num_edges())
     throw std::invalid_argument("vertex_height_equilibrium: springs need one entry per edge");
   bool has_block = false;
   for (int k = 0; k < system.num_vertices(); ++k) has_block = has_block || system.vertex_of_block(k) == load.vertex;
   if (!has_block) throw std::invalid_argument("vertex_height_equilibrium: the vertex has no closure rows");
-  const Fan& fan = topology.stars[load.vertex].fans.at(0);
-  const int d = static_cast<int>(fan.edges.size());
-  std::vector<int> slot_unknown(d);
-  for (int j = 0; j < d; ++j) slot_unknown[j] = system.unknown_of_edge(fan.edges[j]);
-  std::vector<int> support_slot;
-  std::vector<double> length;
+  LoadSetup st;
+  st.fan = &topology.stars[load.vertex].fans.at(0);
+  const int d = static_cast<int>(st.fan->edges.size());
+  st.slot_unknown.resize(d);
+  for (int j = 0; j < d; ++j) st.slot_unknown[j] = system.unknown_of_edge(st.fan->edges[j]);
   for (int e : load.support_edges) {
-    const auto it = std::find(fan.edges.begin(), fan.edges.end(), e);
-    if (it == fan.edges.end()) throw std::invalid_argument("vertex_height_equilibrium: support edge not at the vertex");
-    support_slot.push_back(static_cast<int>(it - fan.edges.begin()));
+    const auto it = std::find(st.fan->edges.begin(), st.fan->edges.end(), e);
+    if (it == st.fan->edges.end()) throw std::invalid_argument("vertex_height_equilibrium: support edge not at the vertex");
+    st.support_slot.push_back(static_cast<int>(it - st.fan->edges.begin()));
     const auto& ev = pattern.edges[e];
-    length.push_back((pattern.vertices[ev[0]] - pattern.vertices[ev[1]]).norm());
+    st.length.push_back((pattern.vertices[ev[0]] - pattern.vertices[ev[1]]).norm());
   }
-  const int ns = static_cast<int>(support_slot.size());
-  const int mr = system.num_rows();
-  const int N = nx + 3, M = mr + ns + 1;
+  st.nx = system.num_unknowns();
+  st.ns = static_cast<int>(st.support_slot.size());
+  st.mr = system.num_rows();
+  st.N = st.nx + 3;
+  st.M = st.mr + st.ns + 1;
+  return st;
+}
+
+void assemble_kkt(const LoadSetup& st, const ClosureSystem& system, const Topology& topology, const CreaseSprings& springs,
+                  const VertexHeightLoad& load, const Eigen::VectorXd& x, const Eigen::Vector3d& nu,
+                  const Eigen::VectorXd& w, bool with_hessian, HeightControlKkt& k) {
+  const Fan& fan = *st.fan;
+  const int nx = st.nx, ns = st.ns, mr = st.mr, N = st.N, M = st.M;
+  const std::vector<int>& slot_unknown = st.slot_unknown;
+  const std::vector<int>& support_slot = st.support_slot;
+  const std::vector<double>& length = st.length;
+  Eigen::MatrixXd& A = k.jacobian;
+  Eigen::MatrixXd& H = k.hessian;
+  Eigen::VectorXd& c = k.constraints;
+  Eigen::VectorXd& gradL = k.gradient;
+  A.resize(M, N);
+  H.resize(N, N);
+  c.resize(M);
+  gradL.resize(N);
+  const Eigen::VectorXd rho = system.edges_from_unknowns(x);
+  const FanGeometry g = fan_geometry(fan, rho);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  system.evaluate(x, r, J);
+  A.setZero();
+  A.topLeftCorner(mr, nx) = Eigen::MatrixXd(J);
+  c.head(mr) = r;
+  Eigen::VectorXd gE(nx);
+  const Eigen::VectorXd ge = crease_energy_gradient(springs, rho);
+  for (int k = 0; k < nx; ++k) gE[k] = ge[system.edge_of_unknown(k)];
+  if (with_hessian) {
+    H.setZero();
+    H.topLeftCorner(nx, nx) = closure_weighted_hessian(system, topology, x, w.head(mr));
+    for (int k = 0; k < nx; ++k) H(k, k) += springs.stiffness[system.edge_of_unknown(k)];
+    H.bottomRightCorner(3, 3) += w[M - 1] * Eigen::Matrix3d::Identity();
+  }
+  for (int s = 0; s < ns; ++s) {
+    const int i = support_slot[s];
+    const double L = length[s], mu = w[mr + s];
+    const Eigen::Vector3d& ui = g.axis[i];
+    c[mr + s] = L * nu.dot(ui) + load.height;
+    A.block<1, 3>(mr + s, nx) = L * ui.transpose();
+    for (int j = 0; j < i; ++j) {
+      const int cj = slot_unknown[j];
+      if (cj < 0) continue;
+      const Eigen::Vector3d dj = g.axis[j].cross(ui);  // du_i / drho_j
+      A(mr + s, cj) += L * nu.dot(dj);
+      if (!with_hessian) continue;
+      H.block<1, 3>(cj, nx) += mu * L * dj.transpose();
+      H.block<3, 1>(nx, cj) += mu * L * dj;
+      for (int k = j; k < i; ++k) {
+        const int ck = slot_unknown[k];
+        if (ck < 0) continue;
+        const Eigen::Vector3d& uj = g.axis[j];
+        const Eigen::Vector3d& uk = g.axis[k];
+        // d2 u_i / drho_j drho_k, j <= k < i (u_k does not depend on rho_k).
+        const Eigen::Vector3d second = (j == k) ? Eigen::Vector3d(uj.cross(uj.cross(ui)))
+                                                : Eigen::Vector3d(uj.cross(uk).cross(ui) + uk.cross(uj.cross(ui)));
+        const double v = mu * L * nu.dot(second);
+        H(cj, ck) += v;
+        if (ck != cj) H(ck, cj) += v;
+      }
+    }
+  }
+  c[M - 1] = 0.5 * (nu.squaredNorm() - 1.0);
+  A.block<1, 3>(M - 1, nx) = nu.transpose();
+  gradL.setZero();
+  gradL.head(nx) = gE;
+  gradL += A.transpose() * w;
+}
+
+}  // namespace
+
+HeightControlKkt height_control_kkt(const CreasePattern& pattern, const ClosureSystem& system, const Topology& topology,
+                                   const CreaseSprings& springs, const VertexHeightLoad& load, const Eigen::VectorXd& x,
+                                   const Eigen::Vector3d& nu, const Eigen::VectorXd& multipliers) {
+  const LoadSetup st = make_setup(pattern, system, topology, springs, load);
+  if (x.size() != st.nx || multipliers.size() != st.M) throw std::invalid_argument("height_control_kkt: wrong sizes");
+  HeightControlKkt k;
+  assemble_kkt(st, system, topology, springs, load, x, nu, multipliers, true, k);
+  return k;
+}
+
+HeightControlledEquilibrium vertex_height_equilibrium(const CreasePattern& pattern, const ClosureSystem& system,
+                                                      const Topology& topology, const CreaseSprings& springs,
+                                                      const VertexHeightLoad& load, const Eigen::VectorXd& x0,
+                                                      const HeightControlOptions& options) {
+  if (x0.size() != system.num_unknowns()) throw std::invalid_argument("vertex_height_equilibrium: x0 needs num_unknowns() entries");
+  const LoadSetup st = make_setup(pattern, system, topology, springs, load);
+  const Fan& fan = *st.fan;
+  const int nx = st.nx, ns = st.ns, mr = st.mr, N = st.N, M = st.M;
   const double kmax = springs.stiffness.size() ? std::max(springs.stiffness.maxCoeff(), 1e-300) : 1.0;
 
   HeightControlledEquilibrium out;
   Eigen::VectorXd x = x0;
   Eigen::Vector3d nu = fan_geometry(fan, system.edges_from_unknowns(x)).mean_normal.normalized();
   Eigen::VectorXd w = Eigen::VectorXd::Zero(M);  // (lambda, mu, kappa)
-  Eigen::MatrixXd A(M, N), H(N, N);
-  Eigen::VectorXd c(M), gradL(N);
 
-  // Constraint rows, their Jacobian A, and (with the current w) the Lagrangian's gradient
-  // and Hessian at (x, nu).
-  auto assemble = [&](bool with_hessian) {
-    const Eigen::VectorXd rho = system.edges_from_unknowns(x);
-    const FanGeometry g = fan_geometry(fan, rho);
-    Eigen::VectorXd r;
-    Eigen::SparseMatrix<double> J;
-    system.evaluate(x, r, J);
-    A.setZero();
-    A.topLeftCorner(mr, nx) = Eigen::MatrixXd(J);
-    c.head(mr) = r;
-    Eigen::VectorXd gE(nx);
-    const Eigen::VectorXd ge = crease_energy_gradient(springs, rho);
-    for (int k = 0; k < nx; ++k) gE[k] = ge[system.edge_of_unknown(k)];
-    if (with_hessian) {
-      H.setZero();
-      H.topLeftCorner(nx, nx) = closure_weighted_hessian(system, topology, x, w.head(mr));
-      for (int k = 0; k < nx; ++k) H(k, k) += springs.stiffness[system.edge_of_unknown(k)];
-      H.bottomRightCorner(3, 3) += w[M - 1] * Eigen::Matrix3d::Identity();
-    }
-    for (int s = 0; s < ns; ++s) {
-      const int i = support_slot[s];
-      const double L = length[s], mu = w[mr + s];
-      const Eigen::Vector3d& ui = g.axis[i];
-      c[mr + s] = L * nu.dot(ui) + load.height;
-      A.block<1, 3>(mr + s, nx) = L * ui.transpose();
-      for (int j = 0; j < i; ++j) {
-        const int cj = slot_unknown[j];
-        if (cj < 0) continue;
-        const Eigen::Vector3d dj = g.axis[j].cross(ui);  // du_i / drho_j
-        A(mr + s, cj) += L * nu.dot(dj);
-        if (!with_hessian) continue;
-        H.block<1, 3>(cj, nx) += mu * L * dj.transpose();
-        H.block<3, 1>(nx, cj) += mu * L * dj;
-        for (int k = j; k < i; ++k) {
-          const int ck = slot_unknown[k];
-          if (ck < 0) continue;
-          const Eigen::Vector3d& uj = g.axis[j];
-          const Eigen::Vector3d& uk = g.axis[k];
-          // d2 u_i / drho_j drho_k, j <= k < i (u_k does not depend on rho_k).
-          const Eigen::Vector3d second = (j == k) ? Eigen::Vector3d(uj.cross(uj.cross(ui)))
-                                                  : Eigen::Vector3d(uj.cross(uk).cross(ui) + uk.cross(uj.cross(ui)));
-          const double v = mu * L * nu.dot(second);
-          H(cj, ck) += v;
-          if (ck != cj) H(ck, cj) += v;
-        }
-      }
-    }
-    c[M - 1] = 0.5 * (nu.squaredNorm() - 1.0);
-    A.block<1, 3>(M - 1, nx) = nu.transpose();
-    gradL.setZero();
-    gradL.head(nx) = gE;
-    gradL += A.transpose() * w;
-  };
+  HeightControlKkt kkt;
+  Eigen::MatrixXd& A = kkt.jacobian;
+  Eigen::MatrixXd& H = kkt.hessian;
+  Eigen::VectorXd& c = kkt.constraints;
+  Eigen::VectorXd& gradL = kkt.gradient;
+  auto assemble = [&](bool with_hessian) { assemble_kkt(st, system, topology, springs, load, x, nu, w, with_hessian, kkt); };
 
   // Least-squares multipliers for the start.
   assemble(false);

@@ -67,6 +67,20 @@ struct HeightControlledEquilibrium {
   bool stable = false;
 };
 
+// The KKT pieces at z = (x, nu) with multipliers (lambda, mu, kappa) (num_rows() + supports
+// + 1 entries): constraint rows, their Jacobian (rows x (num_unknowns() + 3)), the gradient
+// and Hessian of the Lagrangian in z. The Hessian is exact where the closure rows vanish
+// (closure_weighted_hessian). Exposed so that tests can check the derivatives.
+struct HeightControlKkt {
+  Eigen::VectorXd constraints;
+  Eigen::MatrixXd jacobian;
+  Eigen::VectorXd gradient;
+  Eigen::MatrixXd hessian;
+};
+HeightControlKkt height_control_kkt(const CreasePattern& pattern, const ClosureSystem& system, const Topology& topology,
+                                   const CreaseSprings& springs, const VertexHeightLoad& load, const Eigen::VectorXd& x,
+                                   const Eigen::Vector3d& nu, const Eigen::VectorXd& multipliers);
+
 // Inputs: the system and topology of `pattern`, springs for it, the load, and a start x0
 //   (free fold angles; the nearest KKT point is found, a saddle included: check stable).
 // Throws std::invalid_argument for a vertex without a closure block, a support edge not in

@@ -13,6 +13,7 @@
 #include "kernel/energy/vertex_height_control.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold {
 namespace {
@@ -63,6 +64,61 @@ TEST(EnergyHeightControl, ReactionForceEqualsVirtualWork) {
       EXPECT_EQ(eq.tangent_dimension, (2 * n - 3) + 3 - n - 1);
     }
   }
+}
+
+// Exact derivatives: on the closure manifold, the constraint Jacobian and the Hessian of the
+// Lagrangian equal central differences of the rows and of the gradient (random normal and
+// multipliers, n = 5, an asymmetric state).
+TEST(EnergyHeightControl, KktDerivativesMatchCentralDifferences) {
+  const int n = 5;
+  generators::WaterbombParams wp;
+  wp.n = n;
+  const CreasePattern p = generators::waterbomb_base(wp);
+  const Topology topo = build_topology(p);
+  const ClosureSystem sys(p, topo);
+  std::mt19937_64 rng(55);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd k(p.num_edges()), rest(p.num_edges());
+  for (int e = 0; e < p.num_edges(); ++e) {
+    k[e] = 1.0 + 0.5 * u(rng);
+    rest[e] = 0.5 * u(rng);
+  }
+  const CreaseSprings springs = make_crease_springs(p, k, rest);
+  VertexHeightLoad load;
+  load.vertex = 0;
+  load.support_edges = {0, 4, 6};
+  load.height = 0.3;
+  // An asymmetric point on the manifold: the closed form at 70 deg, perturbed, projected.
+  Eigen::VectorXd edges = Eigen::VectorXd::Zero(p.num_edges());
+  const auto g = waterbomb::waterbomb_fold_angles(n, to_radians(70.0));
+  for (int e = 0; e < 2 * n; ++e) edges[e] = (p.assignments[e] == Assignment::Mountain ? g.gamma_m : g.gamma_v) + 0.05 * u(rng);
+  const NewtonResult proj = newton_project(sys, sys.unknowns_from_edges(edges));
+  ASSERT_TRUE(proj.converged);
+  const Eigen::VectorXd x = proj.x;
+  const Eigen::Vector3d nu = Eigen::Vector3d(u(rng), u(rng), 1.0).normalized();
+  Eigen::VectorXd w(sys.num_rows() + 3 + 1);
+  for (Eigen::Index i = 0; i < w.size(); ++i) w[i] = u(rng);
+  const HeightControlKkt at = height_control_kkt(p, sys, topo, springs, load, x, nu, w);
+  const int nx = sys.num_unknowns();
+  const double h = 1e-6;
+  for (int j = 0; j < nx + 3; ++j) {
+    Eigen::VectorXd xp = x, xm = x;
+    Eigen::Vector3d np = nu, nm = nu;
+    if (j < nx) {
+      xp[j] += h;
+      xm[j] -= h;
+    } else {
+      np[j - nx] += h;
+      nm[j - nx] -= h;
+    }
+    const HeightControlKkt a = height_control_kkt(p, sys, topo, springs, load, xp, np, w);
+    const HeightControlKkt b = height_control_kkt(p, sys, topo, springs, load, xm, nm, w);
+    const Eigen::VectorXd dc = (a.constraints - b.constraints) / (2 * h);
+    const Eigen::VectorXd dg = (a.gradient - b.gradient) / (2 * h);
+    EXPECT_LT((dc - at.jacobian.col(j)).lpNorm<Eigen::Infinity>(), 1e-8) << "column " << j;
+    EXPECT_LT((dg - at.hessian.col(j)).lpNorm<Eigen::Infinity>(), 1e-7) << "column " << j;
+  }
+  EXPECT_LT((at.hessian - at.hessian.transpose()).lpNorm<Eigen::Infinity>(), 1e-12);
 }
 
 }  // namespace
