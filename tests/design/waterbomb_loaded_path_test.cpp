@@ -1,0 +1,39 @@
+// The waterbomb under displacement control on the general model (design/waterbomb/
+// waterbomb_loaded_path.hpp): reaction force = virtual work along the whole path, and the
+// stability changes of the loaded symmetric state located.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "design/waterbomb/waterbomb_loaded_path.hpp"
+#include "kernel/math/angle_units.hpp"
+
+namespace rigidfold {
+namespace {
+
+TEST(WaterbombLoadedPath, ForceMatchesVirtualWorkAndStabilityChangesAreLocated) {
+  std::vector<double> thetas;
+  for (double deg = 20.0; deg <= 130.0; deg += 5.0)
+    if (deg != 90.0) thetas.push_back(to_radians(deg));
+  const auto path = waterbomb::waterbomb_loaded_path(4, to_radians(60.0), 1.0, 1.0, thetas);
+  ASSERT_EQ(path.points.size(), thetas.size());
+  for (const auto& q : path.points) {
+    ASSERT_TRUE(q.converged) << to_degrees(q.theta);
+    EXPECT_NEAR(q.force, q.force_closed_form, 1e-9 * std::max(1.0, std::fabs(q.force_closed_form))) << to_degrees(q.theta);
+    EXPECT_LT(q.fold_angle_gap, 1e-9);
+    if (q.theta < kPi / 2) EXPECT_TRUE(q.stable) << to_degrees(q.theta);  // the push toward flat stays symmetric
+  }
+  // Every located change sits between points of opposite stability and is a zero of the
+  // smallest eigenvalue: just either side of it the signs differ.
+  ASSERT_FALSE(path.stability_changes.empty());
+  for (std::size_t i = 0; i < path.stability_changes.size(); ++i) {
+    const double tc = path.stability_changes[i];
+    EXPECT_GT(tc, kPi / 2);
+    const auto near = waterbomb::waterbomb_loaded_path(4, to_radians(60.0), 1.0, 1.0, {tc - 1e-6, tc + 1e-6});
+    EXPECT_NE(near.points[0].min_eigenvalue > 0.0, near.points[1].min_eigenvalue > 0.0) << to_degrees(tc);
+    RecordProperty("stability_change_deg_" + std::to_string(i), std::to_string(to_degrees(tc)));
+  }
+}
+
+}  // namespace
+}  // namespace rigidfold
