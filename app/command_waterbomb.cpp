@@ -101,6 +101,16 @@ void add_waterbomb_command(CLI::App& app) {
       list.push_back(s);
     }
     j["equilibria"] = list;
+    // Barriers along the symmetric path only: over the flat cusp from each stable state. An
+    // unsymmetric path between the states may cross lower (not searched yet).
+    double cusp_energy = NAN;
+    for (const auto& e : r.equilibria)
+      if (e.path.kind == waterbomb::EquilibriumKind::kCuspMaximum) cusp_energy = e.path.energy;
+    nlohmann::ordered_json barriers = nlohmann::ordered_json::array();
+    if (std::isfinite(cusp_energy))
+      for (const auto& e : r.stable_states())
+        barriers.push_back({{"from_theta_deg", to_degrees(e.path.theta)}, {"symmetric_path_barrier", cusp_energy - e.path.energy}});
+    j["barriers"] = barriers;
     if (a->json) {
       std::cout << j.dump(2) << "\n";
       return;
@@ -121,6 +131,11 @@ void add_waterbomb_command(CLI::App& app) {
                       s["stationarity_residual"].get<double>(), s["min_reduced_hessian_eigenvalue"].get<double>());
         std::cout << line;
       }
+    }
+    for (const auto& b : barriers) {
+      std::snprintf(line, sizeof line, "  barrier over the flat state from theta = %.12g deg: %.12g (symmetric path)\n",
+                    b["from_theta_deg"].get<double>(), b["symmetric_path_barrier"].get<double>());
+      std::cout << line;
     }
   });
 }

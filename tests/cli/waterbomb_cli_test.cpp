@@ -37,6 +37,10 @@ TEST(WaterbombCli, JsonMatchesLibraryAndCloses) {
     }
   }
   EXPECT_EQ(stable, 2);
+  // Symmetric-path barriers: the flat cusp's energy above each stable state, both positive.
+  ASSERT_EQ(j["barriers"].size(), 2u);
+  for (const auto& b : j["barriers"]) EXPECT_GT(b["symmetric_path_barrier"].get<double>(), 0.0);
+  EXPECT_GT(j["barriers"][0]["symmetric_path_barrier"].get<double>(), j["barriers"][1]["symmetric_path_barrier"].get<double>());
 }
 
 TEST(WaterbombCli, TextNamesStableStates) {
