@@ -123,6 +123,23 @@ TEST(EnergyEquilibrium, Fig29SecondStableStateWithoutSymmetry) {
   EXPECT_LT(first.energy, 1e-18);
 }
 
+// The same for other degrees and unequal stiffnesses: the unsymmetric minimiser from a
+// perturbed far-side start lands on the closed-form state 2.
+TEST(EnergyEquilibrium, FarSideMinimumMatchesClosedFormForEveryDegree) {
+  for (int n : {3, 5, 6, 8})
+    for (double ratio : {0.5, 2.0}) {
+      const auto ws = waterbomb::springs_at_rest_theta(n, to_radians(55.0), ratio, 1.0);
+      const waterbomb::PathEquilibrium closed = far_minimum(ws);
+      const Base b(n, ws.rest, ratio, 1.0);
+      const double start = std::min(closed.theta + 0.2, 0.5 * (closed.theta + waterbomb::theta_limit(n)));
+      const Equilibrium eq = find_equilibrium(b.system, b.topology, b.springs, b.perturbed_start(n, start, 0.03, n));
+      ASSERT_TRUE(eq.converged) << eq.message << " n " << n << " ratio " << ratio;
+      EXPECT_TRUE(eq.stable) << n << " " << ratio;
+      EXPECT_LT((eq.edge_angles - b.per_edge(closed.angles)).lpNorm<Eigen::Infinity>(), 1e-9) << n << " " << ratio;
+      EXPECT_NEAR(eq.energy, closed.energy, 1e-9 * closed.energy) << n << " " << ratio;
+    }
+}
+
 // stable_states collects the two states of the bistable base, in order of energy.
 TEST(EnergyEquilibrium, StableStatesListsBothStates) {
   const int n = 4;
