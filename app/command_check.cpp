@@ -3,6 +3,7 @@
 // Exit 0 whether or not it folds; 2 on bad input.
 #include <iostream>
 
+#include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
 #include "app/foldability_json.hpp"
 #include "kernel/analysis/foldability_report.hpp"
@@ -58,7 +59,11 @@ void add_check_command(CLI::App& app) {
     FoldabilityOptions options;
     options.use_assignment = !a->ignore;
     options.force_general = a->general;
-    const FoldabilityReport r = check_foldability(p, t, options);
+    const FoldabilityReport r = [&] {
+      TerminalProgress progress("check");  // its line is erased before the result is printed
+      options.progress = progress.sink();
+      return check_foldability(p, t, options);
+    }();
     if (a->json) {
       nlohmann::ordered_json j = {{"file", a->pattern}};
       j.update(foldability_json(r));

@@ -14,6 +14,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
 #include "app/foldability_json.hpp"
 #include "kernel/pattern/length_scale.hpp"
@@ -49,7 +50,7 @@ std::string title_of(const CreasePattern& p, const fs::path& file) {
 
 // The folded state of `file`, if it carries fold angles, is staged in `outputs` (declared
 // by the caller as out_dir/STEM.folded.fold).
-Json analyse(const fs::path& file, const fs::path& out_dir, OutputSet& outputs) {
+Json analyse(const fs::path& file, const fs::path& out_dir, OutputSet& outputs, const ProgressSink& progress) {
   const auto start = std::chrono::steady_clock::now();
   const CreasePattern p = read_fold(file.string());
   const Topology t = build_topology(p, file.string());
@@ -97,6 +98,7 @@ Json analyse(const fs::path& file, const fs::path& out_dir, OutputSet& outputs) 
   j["local_verdict"] = local;
   FoldabilityOptions with_letters, without_letters;
   without_letters.use_assignment = false;
+  with_letters.progress = without_letters.progress = progress;
   j["check"] = foldability_json(check_foldability(p, t, with_letters));
   j["check_ignoring_assignment"] = foldability_json(check_foldability(p, t, without_letters));
   j["vertex_details"] = vertices;
@@ -170,7 +172,12 @@ void add_report_command(CLI::App& app) {
     report["input"] = *dir;
     report["patterns"] = Json::array();
     for (const auto& f : files) {
-      report["patterns"].push_back(analyse(f, *out, outputs));
+      {
+        // Its line is erased before the file's summary line is printed.
+        TerminalProgress progress("report, file " + std::to_string(report["patterns"].size() + 1) + " of " +
+                                  std::to_string(files.size()) + " (" + f.filename().string() + ")");
+        report["patterns"].push_back(analyse(f, *out, outputs, progress.sink()));
+      }
       const auto& j = report["patterns"].back();
       std::cout << j["name"].get<std::string>() << ": " << j["check"]["verdict_class"].get<std::string>() << " (" << j["check"]["model"].get<std::string>()
                 << "); " << j["local_verdict"].get<std::string>();

@@ -53,6 +53,7 @@
 #include <string>
 #include <vector>
 
+#include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
 #include "app/summary_stream.hpp"
 #include "design/strings/miura_string.hpp"
@@ -555,6 +556,8 @@ DesignedString design_curve(const Reader& r, const StringBounds& bounds, json& j
   const std::vector<Eigen::Vector3d>& curve = out.curve;
   CurveDesignOptions co;
   co.bounds = bounds;
+  TerminalProgress progress("string design");  // erased when the design is done, before any output
+  co.progress = progress.sink();
   if (r.doc().contains("theta_deg")) {
     co.theta0 = to_radians(r.number_in(r.doc(), "", "theta_deg", -90, 90, "(-90, 90)"));
     if (*co.theta0 == 0) r.fail("/theta_deg", "must be nonzero");

@@ -45,6 +45,7 @@
 #include <iostream>
 #include <optional>
 
+#include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
 #include "app/summary_stream.hpp"
 #include "kernel/pattern/length_scale.hpp"
@@ -254,7 +255,11 @@ void add_trace_command(CLI::App& app) {
     rq.drive = a->drive;
     if (a->to) rq.to = to_radians(*a->to);
     rq.steps = a->steps;
-    const MotionTrace m = trace_with_flag_names(p, t, rq, a->pattern);
+    const MotionTrace m = [&] {
+      TerminalProgress progress("trace");  // its line is erased before anything is printed
+      rq.progress = progress.sink();
+      return trace_with_flag_names(p, t, rq, a->pattern);
+    }();
 
     // Files were asked for and no branch was traced: no answer (exit 3), nothing written.
     const bool wants_files = !a->out.empty() || !a->csv.empty();

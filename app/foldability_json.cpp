@@ -172,15 +172,27 @@ Json foldability_json(const FoldabilityReport& r) {
   j["obstruction"] = r.obstruction ? obstruction_json(*r.obstruction) : Json(nullptr);
   if (r.input_precision) {
     const auto& ip = *r.input_precision;
-    j["input_precision"] = {{"decimal_places", ip.decimal_places},
-                            {"significant_digits", ip.significant_digits},
-                            {"coordinate_rounding", ip.coordinate_rounding},
-                            {"given_state_closure_gap_rad", ip.given_residual},
-                            {"sector_rounding_bound_rad", ip.max_sector_bound},
-                            {"witness_max_sector_change_rad", ip.max_sector_change},
-                            {"witness_change_over_bound", ip.max_change_ratio},
-                            {"gap_explained_by_rounding", ip.explained},
-                            {"exact_data_verdict", ip.exact_data_verdict}};
+    if (ip.witness_kind == "coordinates")
+      j["input_precision"] = {{"witness", "flat-foldable pattern within the rounding of the coordinates"},
+                              {"decimal_places", ip.decimal_places},
+                              {"significant_digits", ip.significant_digits},
+                              {"coordinate_rounding", ip.coordinate_rounding},
+                              {"kawasaki_defect_as_read_rad", ip.given_residual},
+                              {"witness_max_coordinate_move", ip.max_coordinate_move},
+                              {"witness_move_over_rounding", ip.max_change_ratio},
+                              {"defect_explained_by_rounding", ip.explained},
+                              {"exact_data_verdict", ip.exact_data_verdict}};
+    else
+      j["input_precision"] = {{"witness", "sectors within their rounding bounds closing the given state"},
+                              {"decimal_places", ip.decimal_places},
+                              {"significant_digits", ip.significant_digits},
+                              {"coordinate_rounding", ip.coordinate_rounding},
+                              {"given_state_closure_gap_rad", ip.given_residual},
+                              {"sector_rounding_bound_rad", ip.max_sector_bound},
+                              {"witness_max_sector_change_rad", ip.max_sector_change},
+                              {"witness_change_over_bound", ip.max_change_ratio},
+                              {"gap_explained_by_rounding", ip.explained},
+                              {"exact_data_verdict", ip.exact_data_verdict}};
   }
   if (r.strictness)
     j["strictness"] = {{"strict", r.strictness->strict},
@@ -203,6 +215,14 @@ Json foldability_json(const FoldabilityReport& r) {
   }
   j["max_residual"] = r.max_residual;
   j["interference"] = r.interference_checked;
+  if (!r.pieces.empty()) {
+    Json pieces = Json::array();
+    for (const auto& v : r.pieces)
+      pieces.push_back({{"faces", v.faces}, {"creases", v.creases}, {"interior_vertices", v.interior_vertices},
+                        {"verdict_class", to_string(v.verdict)}, {"is_proof", v.is_proof}, {"dof", v.dof},
+                        {"model", v.model_name}, {"reason", v.reason}});
+    j["pieces"] = std::move(pieces);
+  }
   j["seconds"] = r.seconds;
   return j;
 }

@@ -42,6 +42,8 @@ struct Problem {
   StringBounds bounds;
   bool per_vertex_constraints = true;
   int evaluations = 0;
+  const ProgressSink* progress = nullptr;
+  std::string stage;
 
   int i_theta() const { return 2 * n; }
   int i_w() const { return 2 * n + 1; }
@@ -51,6 +53,11 @@ struct Problem {
   // Objective and (when grad is non-empty) its gradient.
   double evaluate(const std::vector<double>& x, std::vector<double>& grad) {
     ++evaluations;
+    if (progress)
+      report_progress(*progress, [&] {
+        return "string design: NLopt " + stage + ", evaluation " + std::to_string(evaluations) + " (" +
+               std::to_string(n) + " vertices)";
+      });
     const bool want = !grad.empty();
     const double theta0 = x[i_theta()];
     const Eigen::Vector3d w(x[i_w()], x[i_w() + 1], x[i_w() + 2]);
@@ -238,11 +245,14 @@ NloptFitResult fit_string_to_curve(const std::vector<Eigen::Vector3d>& points, c
   res.seed_feasible = seed.feasible;
   x[p.i_theta()] = std::clamp(x[p.i_theta()], lo[p.i_theta()], hi[p.i_theta()]);
   res.algorithm = local_name;
+  p.progress = &o.seed.progress;
   if (o.global) {
+    p.stage = "GN_ISRES (global)";
     res.status = run_stage(p, algorithm_from_name("GN_ISRES"), x, lo, hi, o.global_evaluations, o.max_time, 0, 0);
     res.algorithm = "GN_ISRES + " + local_name;
   }
   // A reachable target's seed is already exact: NLopt only confirms it (stopval).
+  p.stage = local_name;
   res.status = run_stage(p, local, x, lo, hi, o.max_evaluations, o.max_time, o.ftol_rel, o.xtol_rel);
   res.evaluations = p.evaluations;
   for (int i = 0; i < p.n; ++i) {

@@ -165,8 +165,14 @@ CurveDesign design_from_curve(const std::vector<Eigen::Vector3d>& points, const 
     for (int j = 0; j < o.roll_samples; ++j) rolls.push_back(-std::numbers::pi + 2 * std::numbers::pi * j / o.roll_samples);
   int best_reached = -1;
   double best_margin = -1, best_theta = thetas[0], best_roll = rolls[0];
+  long cell = 0;
+  const long cells = static_cast<long>(thetas.size() * rolls.size());
   for (double t : thetas)
     for (double r : rolls) {
+      report_progress(o.progress, [&] {
+        return "string design: closed-form grid, cell " + std::to_string(++cell) + " of " + std::to_string(cells) +
+               " (" + std::to_string(points.size()) + " points)";
+      });
       const Walk w = walk(dirs, lengths, t, r, o.bounds, true);
       if (w.reached > best_reached || (w.reached == best_reached && w.design.alpha_margin > best_margin)) {
         best_reached = w.reached;

@@ -28,6 +28,7 @@
 
 #include "design/strings/miura_string.hpp"
 #include "design/strings/string_kinematics.hpp"
+#include "kernel/analysis/progress.hpp"
 #include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::design {
@@ -65,6 +66,7 @@ struct CurveDesignOptions {
   std::optional<double> roll;    // beta (radians); grid-searched in [-pi, pi) when absent
   int theta_samples = 24, roll_samples = 72;  // grid sizes of the search
   StringBounds bounds;
+  ProgressSink progress;         // each (theta0, roll) cell of the grid; NLopt: each evaluation
 };
 
 struct CurveDesign {

@@ -137,6 +137,11 @@ class Explorer {
     auto accept = [&](const Eigen::VectorXd& x) {
       if ((x - prev_x).norm() > 0) along = (x - prev_x).normalized();
       const PathWatch::Segment seg = record(br, watch, x);
+      report_progress(opt_.progress, [&] {
+        return "branch explorer: branch " + std::to_string(br.id) + ", " + std::to_string(br.path.size()) +
+               " points; " + std::to_string(point_x_.size()) + " branch points found, " +
+               std::to_string(queue_.size()) + " departures waiting";
+      });
       before_prev_x = prev_x;
       prev_x = x;
       if (br.path.size() > 2 && monitor.step(dense_jacobian(sys_, x), along).sign_changed) {

@@ -37,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/analysis/progress.hpp"
 #include "kernel/analysis/tolerances.hpp"
 #include "kernel/analysis/traced_branch.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
@@ -66,6 +67,7 @@ struct BranchExplorerOptions {
     return c;
   }();
   TangentConeOptions cone;           // its rank_tolerance is replaced by tolerances.cone_rank_cut
+  ProgressSink progress;             // each point of each branch
 };
 
 struct BranchPoint {

@@ -9,6 +9,7 @@
 #include "kernel/analysis/reference_mobility.hpp"
 #include "kernel/analysis/rounding_witness.hpp"
 #include "kernel/analysis/straight_line_folds.hpp"
+#include "kernel/pattern/pattern_components.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/solve/rank.hpp"
@@ -51,6 +52,7 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
     if (max_vertex_closure_residual(t, given) > o.tolerances.certificate_residual)
       witness = rounding_witness(p, t, given);
   }
+  report_progress(o.progress, [] { return std::string("given-state model: rank and branches at the given state"); });
   ReferenceMobility m = reference_mobility(p, witness && witness->explained ? witness->witness : t, mo);
   r.model = FoldabilityModel::kGivenStateHoleClosure;
   r.model_name = count_holes(t) > 0 ? "general loop-closure solver with SE(3) hole closures, from the given state"
@@ -182,11 +184,52 @@ double reach_before_interference(const TracedBranch& b) {
   return reach;
 }
 
+// 2'. The multiplier model's verdict on a flat-foldable witness within the file's rounding
+// (flat_foldable_witness.hpp): a yes holds within the input's precision; a no is a proof for
+// the witness only, so "undecided" for the file.
+void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r) {
+  FoldabilityReport::InputPrecision ip;
+  ip.witness_kind = "coordinates";
+  ip.decimal_places = w.precision.decimal_places;
+  ip.significant_digits = w.precision.significant_digits;
+  ip.coordinate_rounding = w.precision.max_rounding;
+  ip.given_residual = w.max_kawasaki_defect;
+  ip.max_coordinate_move = w.max_move;
+  ip.max_change_ratio = w.max_move_ratio;
+  ip.explained = w.explained;
+  ip.exact_data_verdict = "not decided here: as read, vertex " + std::to_string(w.worst_defect_vertex) + " misses Kawasaki by " +
+                          short_text(w.max_kawasaki_defect) +
+                          " rad, so the exact multiplier model does not apply (check --general judges the exact numbers)";
+  const std::string witness_text =
+      "coordinates written with " + std::to_string(ip.decimal_places) + " decimals (rounding <= " + short_text(ip.coordinate_rounding) +
+      "); moving each by at most " + short_text(ip.max_coordinate_move) + " (" + short_text(ip.max_change_ratio) +
+      " of its rounding) makes every vertex flat-foldable (largest Kawasaki defect as read " + short_text(ip.given_residual) +
+      " rad, of the witness " + short_text(w.witness_kawasaki) + " rad)";
+  if (r.foldable()) {
+    r.verdict = FoldabilityClass::kFoldableWithinTolerance;
+    r.reason = "foldable within the input's precision: " + witness_text + ", and that pattern is " + r.reason;
+  } else if (r.not_foldable()) {
+    // A proof for the witness only: the least move makes every vertex flat-foldable but does
+    // not aim at the loop gains, so a rounded Miura's witness misses gain 1 by ~1e-6 while a
+    // pattern within the rounding folds. Undecided, with the witness's obstruction beside it.
+    r.verdict = FoldabilityClass::kUndecided;
+    r.is_proof = false;
+    r.dof = 0;
+    r.reason = "undecided within the input's precision: " + witness_text + ", and that pattern does not fold (" + r.reason +
+               "); another pattern within the rounding may, and the exact numbers are not flat-foldable";
+  } else {
+    r.reason = "within the input's precision: " + witness_text + "; on that pattern: " + r.reason;
+  }
+  r.model_name += " (on a flat-foldable witness within the input's precision)";
+  r.input_precision = ip;
+}
+
 // 3. The general loop-closure verdict, with the branch explorer where it applies.
 void general_report(const CreasePattern& p, const Topology& t, const FoldabilityOptions& o, FoldabilityReport& r) {
   GeneralVerdictOptions go;
   go.use_assignment = o.use_assignment;
   go.tolerances = o.tolerances;
+  go.progress = o.progress;
   GeneralVerdict g = general_verdict(p, t, go);
   r.model = FoldabilityModel::kGeneralLoopClosure;
   r.model_name = g.model;
@@ -219,6 +262,8 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   if (o.explore_branches) {
     BranchExplorerOptions xo;
     xo.tolerances = o.tolerances;
+    xo.progress = o.progress;
+    report_progress(o.progress, [] { return std::string("branch explorer: starting from the flat state"); });
     x = explore_branches(p, t, xo);
   } else {
     x.why_not = "not requested";
@@ -394,8 +439,27 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
   FoldabilityVerdict v = options.use_assignment ? verdict_with_assignment(pattern, topology, vo)
                                                 : verdict_ignoring_assignment(pattern, topology, vo);
   if (v.verdict == Verdict::kNotApplicable) {
+    // Not flat-foldable as read: within the rounding of the file's coordinates?
+    std::optional<FlatFoldableWitness> w = flat_foldable_witness(pattern, topology, options.tolerances.flat_kawasaki);
+    if (w && w->explained) {
+      FoldabilityVerdict wv = options.use_assignment ? verdict_with_assignment(w->witness, w->witness_topology, vo)
+                                                     : verdict_ignoring_assignment(w->witness, w->witness_topology, vo);
+      if (wv.verdict != Verdict::kNotApplicable) {
+        c.model = FoldabilityModel::kMultiplierPropagation;
+        c.why = "every interior vertex is a degree-4 vertex flat-foldable within the rounding of the coordinates "
+                "(Kawasaki defect up to " + short_text(w->max_kawasaki_defect) + " rad at vertex " +
+                std::to_string(w->worst_defect_vertex) + "; a witness pattern moves each coordinate by at most " +
+                short_text(w->max_move_ratio) + " of its rounding): exact O(creases) model on the witness";
+        c.multiplier = std::move(wv);
+        c.flat_witness = std::move(w);
+        return c;
+      }
+    }
     c.model = FoldabilityModel::kGeneralLoopClosure;
     c.why = "multiplier propagation not applicable: " + v.reason;
+    if (w)
+      c.why += "; not explained by the rounding of the coordinates (a flat-foldable witness moves a coordinate by " +
+               short_text(w->max_move_ratio) + " x its rounding at vertex " + std::to_string(w->worst_move_vertex) + ")";
     return c;
   }
   c.model = FoldabilityModel::kMultiplierPropagation;
@@ -404,6 +468,49 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
   return c;
 }
 
+namespace {
+
+// A sheet of several pieces: each checked alone (FoldabilityReport::pieces), and the whole
+// sheet's verdict compared with what the pieces imply.
+void check_pieces(const CreasePattern& pattern, const Topology& topology, const FoldabilityOptions& options,
+                  FoldabilityReport& r) {
+  bool some_folds = false, all_proven_rigid = true;
+  int dof = 0;
+  for (const PatternComponent& piece : split_components(pattern, topology)) {
+    report_progress(options.progress, [&] {
+      return "piece " + std::to_string(r.pieces.size() + 1) + " of " + std::to_string(topology.components.size());
+    });
+    FoldabilityReport::PieceVerdict v;
+    v.faces = piece.pattern.num_faces();
+    try {
+      const Topology t = build_topology(piece.pattern, "piece " + std::to_string(r.pieces.size()));
+      for (int e = 0; e < piece.pattern.num_edges(); ++e) v.creases += t.edge_is_hinge[e] ? 1 : 0;
+      v.interior_vertices = static_cast<int>(t.interior_vertices.size());
+      const FoldabilityReport pr = check_foldability(piece.pattern, t, options);
+      v.verdict = pr.verdict;
+      v.is_proof = pr.is_proof;
+      v.dof = pr.dof;
+      v.model_name = pr.model_name;
+      v.reason = pr.reason;
+    } catch (const std::exception& e) {  // a piece of a valid sheet is valid; say so if not
+      v.reason = std::string("not checked alone: ") + e.what();
+    }
+    some_folds = some_folds || v.verdict == FoldabilityClass::kFoldable;
+    all_proven_rigid = all_proven_rigid && v.verdict == FoldabilityClass::kNotFoldableProof;
+    if (v.verdict == FoldabilityClass::kFoldable) dof += v.dof;
+    r.pieces.push_back(std::move(v));
+  }
+  std::string disagreement;
+  if (some_folds && !r.foldable()) disagreement = "a piece folds on its own, so the sheet folds (the others held flat)";
+  else if (all_proven_rigid && r.foldable()) disagreement = "every piece is proven rigid on its own";
+  else if (some_folds && r.verdict == FoldabilityClass::kFoldable && r.dof != dof)
+    disagreement = "the pieces' DOF add up to " + std::to_string(dof) + ", not " + std::to_string(r.dof);
+  r.reason += "; " + std::to_string(r.pieces.size()) + " pieces checked separately" +
+              (disagreement.empty() ? " (they agree)" : ", which disagree with the whole sheet's check: " + disagreement);
+}
+
+}  // namespace
+
 FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology& topology,
                                     const FoldabilityOptions& options) {
   const auto start = Clock::now();
@@ -411,12 +518,21 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
   r.assignment_used = options.use_assignment;
   r.tolerances = options.tolerances;
   try {
+    report_progress(options.progress, [] { return std::string("choosing the model"); });
     const ModelChoice c = choose_model(pattern, topology, options);
     r.model_choice = c.why;
+    report_progress(options.progress, [&] { return "model: " + std::string(to_string(c.model)); });
     std::optional<StraightLineAnalysis> lines;  // computed once, where a model needs it
     switch (c.model) {
       case FoldabilityModel::kGivenStateHoleClosure: given_state_report(pattern, topology, options, r); break;
       case FoldabilityModel::kMultiplierPropagation:
+        if (c.flat_witness) {
+          // Within the input's precision: the model's exact verdict on the witness.
+          const FlatFoldableWitness& w = *c.flat_witness;
+          multiplier_report(w.witness, w.witness_topology, options, *c.multiplier, r);
+          within_precision_report(w, r);
+          break;
+        }
         if (c.multiplier->verdict != Verdict::kRigidlyFoldable) lines = straight_line_folds(pattern, topology, line_options(options));
         if (!lines || lines->crossing_vertices.empty()) {
           multiplier_report(pattern, topology, options, *c.multiplier, r);
@@ -429,6 +545,7 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
                           ") only rules out motions that fold every crease: the general model decides";
         [[fallthrough]];
       default: {
+        report_progress(options.progress, [] { return std::string("straight crease lines"); });
         if (!lines) lines = straight_line_folds(pattern, topology, line_options(options));
         if (!lines->folds.empty() && !lines->strict_obstruction_vertices.empty()) {
           // Both questions are settled exactly: weakly foldable (a line folds alone), not
@@ -453,6 +570,7 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
     r.model_name = "none";
     r.reason = std::string("no solver applies to this pattern: ") + e.what();
   }
+  if (topology.components.size() > 1) check_pieces(pattern, topology, options, r);
   r.seconds = seconds_since(start);
   return r;
 }

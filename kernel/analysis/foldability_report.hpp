@@ -11,7 +11,12 @@
 //      judged against the input's precision (rounding_witness.hpp);
 //   2. every interior vertex a flat-foldable degree-4 vertex: multiplier propagation
 //      (multiplier_propagation.hpp), exact both ways, O(creases); the fold family is sampled
-//      from flat to the fold limit, one branch per family component;
+//      from flat to the fold limit, one branch per family component. A flat pattern whose
+//      degree-4 vertices miss Kawasaki only by the rounding of its coordinates (an SVG
+//      written with 3 decimals) gets the same model on a witness within that rounding
+//      (flat_foldable_witness.hpp): "foldable within the input's precision" when the witness
+//      folds, "undecided" when it does not (a proof for the witness only: the witness aims at
+//      Kawasaki, not at the loop gains);
 //   3. otherwise (or force_general): the general loop-closure verdict (general_verdict.hpp),
 //      and, where the pattern has at most BranchExplorerOptions::max_unknowns free creases,
 //      the branch explorer (branch_explorer.hpp). The explorer's branches are evidence the
@@ -45,8 +50,10 @@
 #include <vector>
 
 #include "kernel/analysis/branch_explorer.hpp"
+#include "kernel/analysis/flat_foldable_witness.hpp"
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
+#include "kernel/analysis/progress.hpp"
 #include "kernel/analysis/tolerances.hpp"
 #include "kernel/analysis/traced_branch.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
@@ -66,6 +73,7 @@ struct FoldabilityOptions {
   bool explore_branches = true; // run the branch explorer where it applies (general model)
   Tolerances tolerances = kDefaultTolerances;
   int family_samples = 64;      // multiplier model: points sampled along each family component
+  ProgressSink progress;        // the stage running, and the general model's and explorer's units of work
 };
 
 // Why a pattern does not fold (or the search's evidence that it does not).
@@ -117,6 +125,11 @@ struct FoldabilityReport {
   // A folded form whose given state does not close exactly (rounded coordinates): the
   // rounding witness (rounding_witness.hpp) and the verdict of the exact data beside it.
   struct InputPrecision {
+    // "sectors": a folded form's sectors moved to close its given state (rounding_witness);
+    // "coordinates": a flat pattern's coordinates moved to make every vertex flat-foldable
+    // (flat_foldable_witness; given_residual is then the largest Kawasaki defect as read).
+    std::string witness_kind = "sectors";
+    double max_coordinate_move = 0.0;   // "coordinates": largest move (length unit)
     int decimal_places = 0, significant_digits = 0;
     double coordinate_rounding = 0.0;   // largest bound on a coordinate's rounding (length unit)
     double given_residual = 0.0;        // closure gap of the given state as read (radians)
@@ -132,6 +145,19 @@ struct FoldabilityReport {
   double reference_residual = 0.0;
   double sigma_kept = 0.0, sigma_dropped = 0.0;   // either side of the rank cut
   std::string interference_checked; // which interference tests the branches went through
+  // A sheet of several pieces (faces joined across creases; pattern_components.hpp): each
+  // piece checked on its own, in the order of Topology::components. The pieces move
+  // independently, so the sheet folds when some piece folds (the others held flat) and its
+  // DOF is the sum over the pieces that fold; the verdict above is the whole sheet's own
+  // check, and check_foldability states in `reason` where the two disagree. Empty for one piece.
+  struct PieceVerdict {
+    int faces = 0, creases = 0, interior_vertices = 0;
+    FoldabilityClass verdict = FoldabilityClass::kUndecided;
+    bool is_proof = false;
+    int dof = 0;
+    std::string model_name, reason;
+  };
+  std::vector<PieceVerdict> pieces;
   double seconds = 0.0;
 
   bool foldable() const {
@@ -153,6 +179,10 @@ struct ModelChoice {
   std::string why;
   int holes = 0;
   std::optional<FoldabilityVerdict> multiplier;  // kMultiplierPropagation only
+  // A flat pattern whose degree-4 vertices miss Kawasaki only by the rounding of its
+  // coordinates: the multiplier model runs on this witness (flat_foldable_witness.hpp), whose
+  // edges and faces are the pattern's, and the verdict holds "within the input's precision".
+  std::optional<FlatFoldableWitness> flat_witness;
 };
 ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology, const FoldabilityOptions& options);
 

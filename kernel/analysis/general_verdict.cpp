@@ -172,6 +172,10 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   for (int e : drivers) {
     const int k = sys.unknown_of_edge(e);
     for (int s = 0; s < opt.starts_per_crease; ++s) {
+      report_progress(opt.progress, [&] {
+        return "general search: start " + std::to_string(out.starts_tried + 1) + " of " +
+               std::to_string(drivers.size() * opt.starts_per_crease) + " (" + std::to_string(n) + " unknowns)";
+      });
       Eigen::VectorXd x0 = signed_start(sys, sign, opt, rng);
       x0[k] = (sign[e] != 0 ? sign[e] : 1) * opt.held_value;
       NewtonOptions nopt;
@@ -211,6 +215,10 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       for (std::size_t d = 0; d < drivers.size(); ++d) {
         const int e = drivers[d];
         const int k = sys.unknown_of_edge(e);
+        report_progress(opt.progress, [&] {
+          return "evidence search: sign-respecting least squares at fold amplitude " + progress_degrees(eps) +
+                 " deg, start " + std::to_string(d + 1) + " of " + std::to_string(drivers.size());
+        });
         Eigen::VectorXd x0 = unit_starts[d] * eps;
         x0[k] = (sign[e] != 0 ? sign[e] : 1) * eps;
         NewtonOptions nopt;
@@ -288,6 +296,11 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   GeneralVerdict best;
   bool have_best = false;
   const int ntrace = std::min<int>(opt.max_candidates_traced, static_cast<int>(candidates.size()));
+  auto certificate_progress = [&](int c, int count, int edge, const Eigen::VectorXd& x) {
+    return "general model: tracing candidate " + std::to_string(c + 1) + " of " + std::to_string(count) + ", crease " +
+           std::to_string(edge) + " at " + progress_degrees(x[sys.unknown_of_edge(edge)]) + " of " +
+           progress_degrees(opt.tolerances.fold_limit()) + " deg";
+  };
   for (int c = 0; c < ntrace; ++c) {
     GeneralVerdict trial = out;
     const Candidate& cand = candidates[c];
@@ -307,7 +320,11 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     if (rk.dof == 1) {
       if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
       const ContinuationResult cr =
-          continue_one_dof(sys, cand.x, cand.x, [&](const Eigen::VectorXd& x) { return tr.accept(x); },
+          continue_one_dof(sys, cand.x, cand.x,
+                           [&](const Eigen::VectorXd& x) {
+                             report_progress(opt.progress, [&] { return certificate_progress(c, ntrace, cand.edge, x); });
+                             return tr.accept(x);
+                           },
                            opt.continuation);
       if (trial.trace.stopped_by == StopReason::kNone) {
         trial.trace.stopped_by = StopReason::kContinuationFailed;
@@ -335,6 +352,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
           break;
         }
         x = nr.x;
+        report_progress(opt.progress, [&] { return certificate_progress(c, ntrace, cand.edge, x); });
         stop = tr.accept(x);
       }
     }

@@ -63,6 +63,7 @@
 #include <vector>
 
 #include "kernel/analysis/multiplier_propagation.hpp"  // Verdict
+#include "kernel/analysis/progress.hpp"
 #include "kernel/analysis/tolerances.hpp"
 #include "kernel/analysis/traced_branch.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
@@ -98,6 +99,7 @@ struct GeneralVerdictOptions {
     c.max_angle_step = 0.1;
     return c;
   }();
+  ProgressSink progress;  // each start of the search and of the evidence search, each traced point
 };
 
 // A candidate bifurcation on a DOF-1 trace (bordered determinant changed sign).

@@ -133,8 +133,13 @@ class GeneralTracer {
   }
 
   MotionBranch run() {
+    report_progress(rq_.progress, [&] {
+      return "trace: first folded point (" + std::to_string(sys_.num_unknowns()) + " unknowns)";
+    });
     const std::optional<Eigen::VectorXd> start = find_start();
-    if (!start || !dof_is_one(*start)) return b_;
+    if (!start) return b_;
+    report_progress(rq_.progress, [] { return std::string("trace: DOF at the first point (rank of the Jacobian)"); });
+    if (!dof_is_one(*start)) return b_;
     if (!continue_to_target(*start)) return b_;
     sample_steps();
     return b_;
@@ -200,7 +205,13 @@ class GeneralTracer {
     const double fold_limit = rq_.tolerances.fold_limit();
     Eigen::VectorXd direction = Eigen::VectorXd::Zero(sys_.num_unknowns());
     direction[kd_] = dir_;
+    int points = 0;
     auto stop = [&](const Eigen::VectorXd& x) {
+      ++points;
+      report_progress(rq_.progress, [&] {
+        return "trace: continuation, crease " + std::to_string(b_.drive) + " at " + progress_degrees(x[kd_]) + " of " +
+               progress_degrees(b_.to) + " deg (" + std::to_string(points) + " points)";
+      });
       return dir_ * x[kd_] >= std::fabs(b_.to) || max_abs(sys_.edges_from_unknowns(x)) >= fold_limit;
     };
     ContinuationOptions copt;
@@ -295,6 +306,9 @@ class GeneralTracer {
     int failures = 0;
     double worst_fail = 0;
     for (int k = 1; k <= rq_.steps; ++k) {
+      report_progress(rq_.progress, [&] {
+        return "trace: output step " + std::to_string(k) + " of " + std::to_string(rq_.steps);
+      });
       const double d = limit_ * k / rq_.steps;
       MotionStep s;
       s.drive = dir_ * d;
@@ -424,6 +438,7 @@ bool wanted(const TraceRequest& rq, int id) { return rq.all_branches || (rq.bran
 void trace_explored(const CreasePattern& p, const Topology& t, const TraceRequest& rq, MotionTrace& out) {
   BranchExplorerOptions xo;
   xo.tolerances = rq.tolerances;
+  xo.progress = rq.progress;
   const BranchExploration x = explore_branches(p, t, xo);
   if (!x.applicable) throw InputError("branch", "branch exploration does not apply: " + x.why_not);
   out.model_name = "general loop-closure solver, branch exploration";
@@ -450,6 +465,7 @@ void trace_given_state(const CreasePattern& p, const Topology& t, const Eigen::V
   FoldabilityOptions fo;
   fo.use_assignment = rq.use_assignment;
   fo.tolerances = rq.tolerances;
+  fo.progress = rq.progress;
   const FoldabilityReport r = check_foldability(p, t, fo);
   out.model_name = r.model_name;
   out.note = std::to_string(choice.holes) + " hole(s); DOF " + std::to_string(r.dof) + " at the given state; " + r.reason;
@@ -501,6 +517,7 @@ MotionTrace trace_motion(const CreasePattern& p, const Topology& t, const TraceR
   fo.use_assignment = rq.use_assignment;
   fo.force_general = rq.force_general;
   fo.tolerances = rq.tolerances;
+  report_progress(rq.progress, [] { return std::string("trace: choosing the model"); });
   const ModelChoice choice = choose_model(p, t, fo);
   const Eigen::VectorXd ref = reference_fold_angles(p, t);
   MotionTrace out;
@@ -510,12 +527,18 @@ MotionTrace trace_motion(const CreasePattern& p, const Topology& t, const TraceR
     trace_given_state(p, t, ref, rq, choice, out);
   } else if (v && v->verdict == Verdict::kRigidlyFoldable && v->family) {
     out.model_name = v->model;
+    if (choice.flat_witness) {
+      out.model_name += " (on a flat-foldable witness within the input's precision)";
+      out.note = "within the input's precision: " + choice.why;
+    }
     out.branches = trace_families(p, *v->family, rq);
   } else if (v && v->verdict == Verdict::kNotRigidlyFoldable) {
     out.model_name = v->model;
     out.note = "not rigidly foldable" + std::string(rq.use_assignment ? " with its M-V assignment" : " in any M-V assignment") +
                ": " + v->reason + (v->obstruction ? " (" + v->obstruction->message + ")" : "") + "; nothing to trace" +
                (rq.use_assignment ? " (try --ignore-assignment)" : "");
+    if (choice.flat_witness)
+      out.note = "the flat-foldable witness within the input's precision (" + choice.why + ") is " + out.note;
   } else {
     out.model = FoldabilityModel::kGeneralLoopClosure;
     out.model_name = "general loop-closure solver";
@@ -524,7 +547,13 @@ MotionTrace trace_motion(const CreasePattern& p, const Topology& t, const TraceR
     if (rq.branch || rq.all_branches) trace_explored(p, t, rq, out);
     else out.branches.push_back(trace_general(p, t, ref, rq));
   }
-  for (MotionBranch& b : out.branches) finish_steps(b, p, t, ref, rq.tolerances);
+  report_progress(rq.progress, [] { return std::string("trace: placing the faces of every step"); });
+  // On a flat-foldable witness within the file's rounding the steps are the witness's: its
+  // closure residuals and faces (coordinates within the rounding of the file's).
+  const bool on_witness = choice.flat_witness && choice.model == FoldabilityModel::kMultiplierPropagation;
+  const CreasePattern& placed = on_witness ? choice.flat_witness->witness : p;
+  const Topology& placed_topology = on_witness ? choice.flat_witness->witness_topology : t;
+  for (MotionBranch& b : out.branches) finish_steps(b, placed, placed_topology, ref, rq.tolerances);
   return out;
 }
 

@@ -51,6 +51,7 @@ struct TraceRequest {
                                  // default 170 deg in its letter's direction (valley for U)
   int steps = 50;                // equally spaced driving angles (flat excluded)
   Tolerances tolerances = kDefaultTolerances;
+  ProgressSink progress;         // each continuation point and output step (progress.hpp)
 };
 
 struct MotionEvent {

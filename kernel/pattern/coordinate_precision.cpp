@@ -9,15 +9,18 @@
 namespace rigidfold {
 namespace {
 
-// Fewest decimals d (0..17) whose decimal rounding of c reads back as c itself.
+// Fewest decimals d (0..17) whose decimal rounding of c reads back as c within two units in
+// its last place: a coordinate that went through arithmetic after it was written (an SVG's
+// translate, y -> 0 - y) is 621.6779999999999 for the 621.678 of the file.
 int decimal_places(double c) {
   if (c == 0.0 || !std::isfinite(c)) return 0;
   char buf[64];
+  const double slack = 2 * (std::nextafter(std::abs(c), std::numeric_limits<double>::infinity()) - std::abs(c));
   for (int d = 0; d <= 17; ++d) {
     std::snprintf(buf, sizeof buf, "%.*f", d, c);
-    if (std::strtod(buf, nullptr) == c) return d;
+    if (std::abs(std::strtod(buf, nullptr) - c) <= slack) return d;
   }
-  return 17;
+  return -1;  // not a number of at most 17 decimals (e.g. 3.7e-19): not decimal-rounded
 }
 
 int magnitude(double c) { return c == 0.0 ? 0 : static_cast<int>(std::floor(std::log10(std::abs(c)))); }
@@ -30,17 +33,22 @@ CoordinatePrecision coordinate_precision(const CreasePattern& p) {
   // are the stored ones times 2^length_exponent, which is what the digits are counted on.
   const double unit = std::ldexp(1.0, p.length_exponent);
   int max_significant = 0, max_decimals = 0;
+  bool beyond_decimals = false;
   for (const Eigen::Vector3d& v : p.vertices)
     for (int k = 0; k < 3; ++k) {
       const double c = v[k] * unit;
       if (c == 0.0) continue;
       const int d = decimal_places(c);
+      if (d < 0) {
+        beyond_decimals = true;
+        continue;
+      }
       max_decimals = std::max(max_decimals, d);
       max_significant = std::max(max_significant, d + magnitude(c) + 1);
     }
   out.decimal_places = max_decimals;
   out.significant_digits = max_significant;
-  out.rounded = max_significant <= 15;
+  out.rounded = !beyond_decimals && max_significant <= 15;
   out.vertex_rounding.assign(p.vertices.size(), 0.0);
   for (std::size_t i = 0; i < p.vertices.size(); ++i)
     for (int k = 0; k < 3; ++k) {
@@ -48,7 +56,8 @@ CoordinatePrecision coordinate_precision(const CreasePattern& p) {
       double u = std::max(0.5 * std::pow(10.0, -max_decimals),
                           0.5 * std::pow(10.0, magnitude(c) - max_significant + 1));
       if (c == 0.0) u = 0.5 * std::pow(10.0, -max_decimals);
-      u = std::max(u, std::ldexp(std::abs(c), -52)) / unit;  // back to stored units
+      // Plus the two units in the last place decimal_places allows (2^-51 |c|).
+      u = (std::max(u, std::ldexp(std::abs(c), -52)) + std::ldexp(std::abs(c), -51)) / unit;  // back to stored units
       out.vertex_rounding[i] = std::max(out.vertex_rounding[i], u);
       out.max_rounding = std::max(out.max_rounding, u);
     }

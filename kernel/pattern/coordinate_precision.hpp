@@ -3,14 +3,17 @@
 // (issue 12, "tolerance from the input"): a pattern exported with 6 decimals carries sector
 // angles known to ~1e-6 and cannot be judged in exact arithmetic.
 //
-// Method: each coordinate c is given the fewest decimal places d (0..17) for which c is the
-// double nearest to round(c 10^d) / 10^d, and its significant digits s = d + floor(log10|c|) + 1.
+// Method: each coordinate c is given the fewest decimal places d (0..17; none: the file is
+// not read as rounded) for which c lies
+// within two units in its last place of the double nearest to round(c 10^d) / 10^d (two ulps:
+// the coordinate may have gone through a translation or a sign change after it was written,
+// as an SVG's are), and its significant digits s = d + floor(log10|c|) + 1.
 // A writer rounds either to a fixed number of decimals D (the largest d in the file) or to
 // a fixed number of significant digits S (the largest s); the rounding of coordinate c is
 // then at most half a unit in its last place under either reading, and the bound taken is
 // the larger of the two:
-//     u(c) = max(0.5 10^-D, 0.5 10^(floor(log10|c|) - S + 1)),
-// never below the double rounding 2^-52 |c|. A coordinate written with fewer places than
+//     u(c) = max(0.5 10^-D, 0.5 10^(floor(log10|c|) - S + 1), 2^-52 |c|) + 2^-51 |c|
+// (the last term: the two ulps). A coordinate written with fewer places than
 // its neighbours (0.25 among 0.466968) is an exact value or rounded the same way; both
 // readings cover it.
 //

@@ -14,6 +14,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "tests/support/run_command.hpp"
+#include "tests/support/sanitized.hpp"
 
 namespace rigidfold {
 namespace {
@@ -48,7 +49,16 @@ void expect_report_invariants(const FoldabilityReport& r, const std::string& whe
   }
   // A "no" of the general search rests on evidence above the floor that grows with the fold
   // (general_verdict.hpp, step 5): never on a residual near the search's own threshold.
-  if (r.verdict == FoldabilityClass::kNotFoldableEvidence) {
+  // Or, for a flat pattern judged on its flat-foldable witness within the rounding, on that
+  // witness's exact obstruction.
+  const bool on_flat_witness = r.input_precision && r.input_precision->witness_kind == "coordinates";
+  if (on_flat_witness) {
+    EXPECT_TRUE(r.input_precision->explained) << where;
+    EXPECT_LE(r.input_precision->max_change_ratio, 1.0) << where;
+    EXPECT_GT(r.input_precision->given_residual, r.tolerances.flat_kawasaki) << where;
+    EXPECT_FALSE(r.not_foldable()) << where << ": a witness's no is not the file's";
+  }
+  if (r.verdict == FoldabilityClass::kNotFoldableEvidence && !on_flat_witness) {
     ASSERT_TRUE(r.obstruction.has_value()) << where;
     EXPECT_GE(r.obstruction->least_residual, r.tolerances.evidence_floor) << where;
     ASSERT_GE(r.search_evidence.size(), 2u) << where;
@@ -59,7 +69,9 @@ void expect_report_invariants(const FoldabilityReport& r, const std::string& whe
   // strict certificate cannot coexist with crossing lettered lines (a proof against it).
   if (r.strictness) {
     EXPECT_EQ(r.strictness->strict, r.strictness->flat_lettered.empty()) << where;
-    if (r.strictness->strict) EXPECT_TRUE(r.strictness->strict_obstruction_vertices.empty()) << where;
+    if (r.strictness->strict) {
+      EXPECT_TRUE(r.strictness->strict_obstruction_vertices.empty()) << where;
+    }
   }
   // "Within the input's precision" only with the rounding witness that explains the gap.
   if (r.verdict == FoldabilityClass::kFoldableWithinTolerance) {
@@ -72,11 +84,7 @@ void expect_report_invariants(const FoldabilityReport& r, const std::string& whe
 
 // The sanitizer build (Debug, ASan) runs every test ~30x slower; there the five large
 // box-pleat files (thousands of vertices, ~10 s each in Release) are left to the Release run.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+constexpr bool kSanitized = test::kSanitizedBuild;
 
 void expect_cli_agrees(const std::string& file, bool use_assignment) {
   const std::string where = file + (use_assignment ? "" : " (letters ignored)");

@@ -21,14 +21,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "tests/support/run_command.hpp"
-
-#if defined(__SANITIZE_ADDRESS__)
-#define RIGIDFOLD_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RIGIDFOLD_TEST_ASAN 1
-#endif
-#endif
+#include "tests/support/sanitized.hpp"
 
 namespace rigidfold {
 namespace {

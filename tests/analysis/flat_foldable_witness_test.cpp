@@ -1,0 +1,126 @@
+// Flat patterns judged within the precision of their coordinates
+// (kernel/analysis/flat_foldable_witness.hpp): a Miura-ori written with 3 or 4 decimals misses
+// Kawasaki by ~1e-5 rad; the witness moves no coordinate further than its rounding (checked
+// here against the rounding the test applied, not the kernel's reading of it) and makes every
+// vertex flat-foldable. A Miura strip (no cycle of vertices) is then "foldable within the
+// input's precision" with the exact DOF; a larger Miura's witness misses loop gain 1 by the
+// rounding, and that is "undecided", never a "no". A pattern whose defects are not rounding
+// (a perturbed Miura) gets no witness.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "data/generators/miura.hpp"
+#include "kernel/analysis/flat_foldable_witness.hpp"
+#include "kernel/analysis/foldability_report.hpp"
+#include "kernel/analysis/trace_motion.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/pattern/validate_pattern.hpp"
+
+namespace rigidfold {
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+
+// A Miura rows x 5 of panel size `size` (alpha 55 deg), coordinates rounded to `decimals`.
+CreasePattern rounded_miura(int rows, double size, int decimals, double perturbation = 0.0) {
+  generators::MiuraParams m;
+  m.rows = rows;
+  m.cols = 5;
+  m.alpha = 55.0 * kPi / 180.0;
+  m.a = size;
+  m.b = 1.31371 * size;  // not a whole number: rounding must differ from vertex to vertex
+  m.perturbation = perturbation;
+  CreasePattern p = generators::miura_ori(m);
+  // Turned by 17 deg first, so that the rounding grid shares no symmetry with the lattice
+  // (along the axes a strip's vertices stay mirror-symmetric and Kawasaki exact).
+  const double scale = std::pow(10.0, decimals), c = std::cos(17.0 * kPi / 180.0), s = std::sin(17.0 * kPi / 180.0);
+  for (Eigen::Vector3d& v : p.vertices) {
+    const Eigen::Vector3d turned(c * v.x() - s * v.y(), s * v.x() + c * v.y(), 0.0);
+    for (int k = 0; k < 2; ++k) v[k] = std::round(turned[k] * scale) / scale;
+  }
+  complete_and_validate(p, "rounded miura");
+  return p;
+}
+
+double max_kawasaki(const Topology& t) {
+  double worst = 0;
+  for (int v : t.interior_vertices) {
+    const auto& s = t.stars[v].fans[0].sectors;
+    worst = std::max(worst, std::abs(s[0] + s[2] - kPi));
+  }
+  return worst;
+}
+
+TEST(FlatFoldableWitness, RoundedMiuraStripFoldsWithinItsPrecision) {
+  for (const int decimals : {3, 4}) {
+    const std::string where = std::to_string(decimals) + " decimals";
+    const CreasePattern p = rounded_miura(2, 100.0, decimals);
+    const Topology t = build_topology(p);
+    ASSERT_GT(max_kawasaki(t), 1e-9) << where << ": the rounding must break Kawasaki for this test to mean anything";
+    const auto w = flat_foldable_witness(p, t, 1e-9);
+    ASSERT_TRUE(w.has_value()) << where;
+    EXPECT_EQ(w->precision.decimal_places, decimals) << where;
+    ASSERT_TRUE(w->explained) << where << ": ratio " << w->max_move_ratio;
+    // Every coordinate within the rounding the test applied (half a unit in the last place,
+    // plus the double rounding of the quotient).
+    const double half_unit = 0.5 * std::pow(10.0, -decimals);
+    for (int i = 0; i < p.num_vertices(); ++i)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_LE(std::abs(w->witness.vertices[i][k] - p.vertices[i][k]), half_unit * (1 + 1e-9)) << where << " vertex " << i;
+    EXPECT_LE(max_kawasaki(build_topology(w->witness)), 1e-12) << where;
+
+    const FoldabilityReport r = check_foldability(p, t);
+    EXPECT_EQ(r.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": " << r.reason;
+    EXPECT_EQ(r.model, FoldabilityModel::kMultiplierPropagation) << where;
+    EXPECT_EQ(r.dof, 1) << where;
+    ASSERT_TRUE(r.input_precision.has_value()) << where;
+    EXPECT_EQ(r.input_precision->witness_kind, "coordinates");
+    EXPECT_LE(r.input_precision->max_change_ratio, 1.0);
+    // The witness's closure residual along its fold family.
+    EXPECT_LE(r.max_residual, r.tolerances.certificate_residual) << where;
+
+    // trace: the same model choice, the witness's fold family.
+    TraceRequest rq;
+    rq.steps = 4;
+    const MotionTrace m = trace_motion(p, t, rq);
+    ASSERT_EQ(m.branches.size(), 1u) << where;
+    EXPECT_TRUE(m.branches[0].traced) << where << ": " << m.note;
+    EXPECT_EQ(m.model, FoldabilityModel::kMultiplierPropagation) << where;
+  }
+}
+
+TEST(FlatFoldableWitness, RoundedMiuraWithCyclesIsUndecidedNeverRigid) {
+  const CreasePattern p = rounded_miura(6, 100.0, 3);
+  const Topology t = build_topology(p);
+  const auto w = flat_foldable_witness(p, t, 1e-9);
+  ASSERT_TRUE(w.has_value());
+  ASSERT_TRUE(w->explained);
+  const FoldabilityReport r = check_foldability(p, t);
+  EXPECT_EQ(r.verdict, FoldabilityClass::kUndecided) << r.reason;
+  EXPECT_FALSE(r.is_proof);
+  EXPECT_NE(r.reason.find("another pattern within the rounding may"), std::string::npos) << r.reason;
+  ASSERT_TRUE(r.input_precision.has_value());
+  EXPECT_EQ(r.input_precision->witness_kind, "coordinates");
+}
+
+TEST(FlatFoldableWitness, DefectsBeyondTheRoundingGetNoWitness) {
+  // A perturbed Miura (vertices moved by 2% of the panel) written with 6 decimals: its
+  // Kawasaki defects are the perturbation's, far above what 6 decimals explain.
+  const CreasePattern p = rounded_miura(6, 1.0, 6, 0.02);
+  const Topology t = build_topology(p);
+  const auto w = flat_foldable_witness(p, t, 1e-9);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_FALSE(w->explained);
+  EXPECT_GT(w->max_move_ratio, 1.0);
+  const ModelChoice c = choose_model(p, t, {});
+  EXPECT_EQ(c.model, FoldabilityModel::kGeneralLoopClosure);
+  EXPECT_NE(c.why.find("not explained by the rounding"), std::string::npos) << c.why;
+
+  // Exact (17-digit) coordinates of a flat-foldable Miura: the exact model, no witness.
+  const CreasePattern exact = generators::miura_ori({});
+  EXPECT_FALSE(flat_foldable_witness(exact, build_topology(exact), 1e-9).has_value());
+}
+
+}  // namespace
+}  // namespace rigidfold
