@@ -9,6 +9,7 @@
 #include "data/generators/generator_common.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "tests/data/generator_test_utils.hpp"
+#include "tests/support/input_error_place.hpp"
 
 namespace rigidfold::test {
 namespace {
@@ -146,14 +147,7 @@ TEST(GeneratorCorrugated, QWithRightBetaIsASquareTwist) {
 }
 
 TEST(GeneratorCorrugated, BadParametersNameTheParameter) {
-  auto place_of = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.place();
-    }
-    return std::string("no error");
-  };
+  auto place_of = [](auto&& f) { return test::input_error_place(f); };
   const auto rigid = generators::corrugated_rigid_assignment(CorrugatedUnit::P);
   EXPECT_EQ(place_of([&] { generators::corrugated_unit(CorrugatedUnit::P, angles(80, 60), rigid); }), "alpha");
   EXPECT_EQ(place_of([&] { generators::corrugated_unit(CorrugatedUnit::P, angles(135, 30), rigid); }), "beta");

@@ -5,6 +5,7 @@
 #include "data/generators/square_twist.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "tests/data/generator_test_utils.hpp"
+#include "tests/support/input_error_place.hpp"
 
 namespace rigidfold::test {
 namespace {
@@ -266,14 +267,7 @@ TEST(GeneratorSquareTwist, ExplicitAssignmentAndRoundTrip) {
 }
 
 TEST(GeneratorSquareTwist, BadParametersNameTheParameter) {
-  auto place_of = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.place();
-    }
-    return std::string("no error");
-  };
+  auto place_of = [](auto&& f) { return test::input_error_place(f); };
   EXPECT_EQ(place_of([] { generators::square_twist(params(90), SquareTwistType::Type1); }), "twist");
   EXPECT_EQ(place_of([] { generators::square_twist(params(0), SquareTwistType::Type1); }), "twist");
   EXPECT_EQ(place_of([] {

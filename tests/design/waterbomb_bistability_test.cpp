@@ -8,6 +8,7 @@
 #include "kernel/energy/crease_stiffness.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
 namespace {
@@ -117,14 +118,7 @@ TEST(WaterbombBistability, Table22PredictedStates) {
 }
 
 TEST(WaterbombBistability, BadInputNamesTheParameter) {
-  auto place_of = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.place();
-    }
-    return std::string("no throw");
-  };
+  auto place_of = [](auto&& f) { return test::input_error_place(f); };
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_bistability(2, 1.0, 1, 1); }), "n");
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_bistability(4, 3.0, 1, 1); }), "theta0");
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_bistability(4, 1.0, -1, 1); }), "k_m");

@@ -12,6 +12,7 @@
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
+#include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
 namespace {
@@ -130,14 +131,7 @@ TEST(WaterbombKinematics, AgreesWithGeneralSolver) {
 }
 
 TEST(WaterbombKinematics, ValidityLimitsAreReported) {
-  auto place_of = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.place();
-    }
-    return std::string("no throw");
-  };
+  auto place_of = [](auto&& f) { return test::input_error_place(f); };
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_fold_angles(4, -1e-12); }), "theta");
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_fold_angles(4, waterbomb::theta_limit(4) + 1e-12); }), "theta");
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_fold_angles(4, NAN); }), "theta");

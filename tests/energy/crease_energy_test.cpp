@@ -16,6 +16,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
 namespace {
@@ -31,14 +32,7 @@ TEST(EnergyStiffness, FlexureMatchesSeedTable21) {
 }
 
 TEST(EnergyStiffness, BadInputNamesTheParameter) {
-  auto place_of = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.place();
-    }
-    return std::string("no throw");
-  };
+  auto place_of = [](auto&& f) { return test::input_error_place(f); };
   EXPECT_EQ(place_of([] { flexure_stiffness(-1, 1, 1, 1); }), "youngs_modulus");
   EXPECT_EQ(place_of([] { flexure_stiffness(1, NAN, 1, 1); }), "width");
   EXPECT_EQ(place_of([] { flexure_stiffness(1, 1, 0, 1); }), "thickness");
