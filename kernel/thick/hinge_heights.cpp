@@ -67,10 +67,32 @@ ThickHeightSheet thick_sheet_from_hinge_heights(const CreasePattern& flat, const
     if (it == edge_of_pair.end()) throw std::invalid_argument("thick sheet: a face side is not an edge");
     return it->second;
   };
-  for (const auto& face : flat.faces) {
+  // find_hole_loops takes the first boundary side met (in face order) to be on a component's
+  // outer boundary and closes every other boundary loop. So the face that leads is one with
+  // a side on the flat pattern's boundary, its polygon starting with that side; otherwise
+  // the cut edges of a truncated vertex would come first and that vertex would get no loop
+  // of its own (the outer loop would stand in for it).
+  int lead_face = 0, lead_side = 0;
+  bool found = false;
+  for (int f = 0; f < flat.num_faces() && !found; ++f)
+    for (int j = 0; j < static_cast<int>(flat.faces[f].size()) && !found; ++j) {
+      const auto& face = flat.faces[f];
+      if (!topology.edge_is_hinge[flat_edge(face[j], face[(j + 1) % face.size()])]) {
+        lead_face = f;
+        lead_side = j;
+        found = true;
+      }
+    }
+  std::vector<int> order{lead_face};
+  for (int f = 0; f < flat.num_faces(); ++f)
+    if (f != lead_face) order.push_back(f);
+  for (int f : order) {
+    const auto& face = flat.faces[f];
     const int k = static_cast<int>(face.size());
+    const int first = f == lead_face ? lead_side : 0;
     std::vector<int> polygon;
-    for (int j = 0; j < k; ++j) {
+    for (int step = 0; step < k; ++step) {
+      const int j = (first + step) % k;
       const int a = face[j], b = face[(j + 1) % k];
       const int e = flat_edge(a, b);
       polygon.push_back(point(a, e));
@@ -81,6 +103,7 @@ ThickHeightSheet thick_sheet_from_hinge_heights(const CreasePattern& flat, const
       p.assignments.push_back(Assignment::Boundary);
     }
     p.faces.push_back(polygon);
+    sheet.flat_face_of_face.push_back(f);
   }
   p.fold_angles.assign(p.edges.size(), std::nullopt);
   sheet.topology = build_topology(p, "thick sheet");

@@ -41,7 +41,8 @@ struct ThickHeightSheet {
   CreasePattern pattern;             // 3D; edges 0 .. E-1 are the flat pattern's edges, same order and assignments
   Topology topology;
   ClosureOptions options;            // close_holes = true
-  std::vector<int> vertex_of_hole;   // flat-pattern vertex of each ClosureSystem hole loop (find_hole_loops order)
+  std::vector<int> vertex_of_hole;   // flat-pattern vertex of each ClosureSystem hole loop (find_hole_loops order; -1: a loop round no single vertex)
+  std::vector<int> flat_face_of_face;  // flat-pattern face of each sheet face (a face with a boundary side leads)
   Eigen::VectorXd reference_edge_angles;  // reference_fold_angles of the sheet (per sheet edge)
   int num_cut_edges = 0;                  // sheet edges after the flat pattern's (boundary of the truncations)
 
