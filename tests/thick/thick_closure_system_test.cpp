@@ -1,15 +1,18 @@
 // SE(3) loop closure of thick-panel patterns (kernel/thick/thick_closure_system.hpp):
 // the DH transform against the seed's explicit matrix, the exact sparse Jacobian against
 // central differences on a pattern of three loops sharing creases, the spherical limit
-// against the zero-thickness vertex loop, and input errors.
+// against the zero-thickness vertex loop, input errors, and the single-loop sheet adapter.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
 
+#include "kernel/closure/closure_system.hpp"
 #include "kernel/thick/dh_link.hpp"
 #include "kernel/thick/thick_closure_system.hpp"
+#include "kernel/thick/thick_sheet.hpp"
+#include "kernel/thick/thick_vertex_models.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
@@ -152,6 +155,35 @@ TEST(ThickClosure, RejectsBadInput) {
   EXPECT_THROW(ThickClosureSystem(p, twice), std::invalid_argument);
   p.loops[0].joints.pop_back();
   EXPECT_THROW(ThickClosureSystem{p}, std::invalid_argument);
+}
+
+// The single-loop adapter (thick_sheet.hpp) refuses what it cannot represent, and its
+// ClosureSystem vanishes exactly where the DH loop closes.
+TEST(ThickSheet, ClosesWhereTheDhLoopClosesAndRefusesOtherInput) {
+  const ThickVertexModel model = bennett_vertex(0.7, 1.1, 0.3);
+  const Eigen::VectorXd closed = Eigen::Map<const Eigen::VectorXd>(bennett_zero_thickness(0.7, 1.1, 1.2).data(), 4);
+  const ThickSheet sheet = thick_sheet_from_loop(model.thick, closed);
+  const ClosureSystem system(sheet.pattern, sheet.topology, sheet.options);
+  ASSERT_EQ(system.num_holes(), 1);
+  ASSERT_EQ(system.num_rows(), 6);
+  const ThickClosureSystem dh(model.thick);
+  for (double rho0 : {0.3, 2.5}) {
+    const Eigen::VectorXd other = Eigen::Map<const Eigen::VectorXd>(bennett_zero_thickness(0.7, 1.1, rho0).data(), 4);
+    EXPECT_LE(system.residual(system.unknowns_from_edges(sheet.edge_angles_from_creases(other))).cwiseAbs().maxCoeff(), 1e-14);
+    // Off the motion both residuals are non-zero.
+    Eigen::VectorXd off = other;
+    off[1] += 0.05;
+    EXPECT_GT(system.residual(system.unknowns_from_edges(sheet.edge_angles_from_creases(off))).norm(), 1e-4);
+    EXPECT_GT(dh.residual(off).norm(), 1e-4);
+    // The crease <-> edge map round-trips.
+    EXPECT_LE((sheet.creases_from_edge_angles(sheet.edge_angles_from_creases(off)) - off).cwiseAbs().maxCoeff(), 1e-15);
+  }
+  Eigen::VectorXd open = closed;
+  open[2] += 0.1;
+  EXPECT_THROW(thick_sheet_from_loop(model.thick, open), std::invalid_argument);
+  ThickPattern two_loops = model.thick;
+  two_loops.loops.push_back(two_loops.loops[0]);
+  EXPECT_THROW(thick_sheet_from_loop(two_loops, closed), std::invalid_argument);
 }
 
 }  // namespace
