@@ -1,7 +1,6 @@
 #include "kernel/thick/bennett_heights.hpp"
 
 #include <cmath>
-#include <deque>
 #include <numbers>
 #include <sstream>
 
@@ -61,9 +60,7 @@ std::vector<double> bennett_hinge_heights(const CreasePattern& flat, const Topol
                                           const Eigen::VectorXd& folded_state, double thickness) {
   if (!(thickness > 0)) throw std::invalid_argument("bennett heights: thickness must be > 0");
   if (folded_state.size() != flat.num_edges()) throw std::invalid_argument("bennett heights: one fold angle per edge expected");
-  const int nv = flat.num_vertices();
-  // Relative heights per interior vertex, keyed by edge.
-  std::vector<std::vector<std::pair<int, double>>> relative(nv);
+  std::vector<std::vector<double>> steps(flat.num_vertices());
   for (int v : topology.interior_vertices) {
     const Fan& fan = topology.stars[v].fans[0];
     const std::string where = "bennett heights: vertex " + std::to_string(v);
@@ -87,52 +84,9 @@ std::vector<double> bennett_hinge_heights(const CreasePattern& flat, const Topol
       throw std::invalid_argument(message.str());
     }
     const std::vector<double> h = staircase(fan.sectors, chosen, thickness);
-    for (int i = 0; i < 4; ++i) relative[v].emplace_back(fan.edges[i], h[i]);
+    for (int i = 0; i < 4; ++i) steps[v].push_back(h[(i + 1) % 4] - h[i]);
   }
-  // Shift each vertex's staircase along a spanning forest of the vertex graph (vertices
-  // joined by shared creases), then check every shared crease.
-  std::vector<std::vector<int>> vertices_of_edge(flat.num_edges());
-  for (int v : topology.interior_vertices)
-    for (const auto& [e, h] : relative[v]) vertices_of_edge[e].push_back(v);
-  auto relative_height = [&](int v, int e) {
-    for (const auto& [edge, h] : relative[v])
-      if (edge == e) return h;
-    return 0.0;
-  };
-  std::vector<double> shift(nv, 0.0);
-  std::vector<bool> placed(nv, false);
-  for (int root : topology.interior_vertices) {
-    if (placed[root]) continue;
-    placed[root] = true;
-    std::deque<int> queue{root};
-    while (!queue.empty()) {
-      const int u = queue.front();
-      queue.pop_front();
-      for (const auto& [e, h] : relative[u])
-        for (int w : vertices_of_edge[e])
-          if (!placed[w]) {
-            shift[w] = shift[u] + h - relative_height(w, e);
-            placed[w] = true;
-            queue.push_back(w);
-          }
-    }
-  }
-  std::vector<double> heights(flat.num_edges(), 0.0);
-  for (int e = 0; e < flat.num_edges(); ++e) {
-    const auto& at = vertices_of_edge[e];
-    if (at.empty()) continue;
-    heights[e] = shift[at[0]] + relative_height(at[0], e);
-    for (std::size_t k = 1; k < at.size(); ++k) {
-      const double other = shift[at[k]] + relative_height(at[k], e);
-      if (std::abs(other - heights[e]) > 1e-12 * thickness) {
-        std::ostringstream message;
-        message << "bennett heights: crease " << e << " would sit at height " << heights[e] << " for vertex " << at[0]
-                << " and " << other << " for vertex " << at[k] << " (thickness " << thickness << ")";
-        throw HingeHeightConflict(e, at[0], at[k], message.str());
-      }
-    }
-  }
-  return heights;
+  return hinge_heights_from_steps(flat, topology, steps, 1e-12 * thickness);
 }
 
 }  // namespace rigidfold

@@ -11,9 +11,9 @@
 // four start creases is right depends on the branch the vertex folds on: it is chosen as the
 // one whose thick vertex closes at the given zero-thickness folded state (residual
 // <= 1e-10). Heights of a pattern are then the per-vertex staircases shifted so that every
-// crease shared by two vertices gets one height (a spanning tree of the vertex graph); a
-// crease where two shifted staircases disagree means no uniform-thickness Bennett design of
-// this kind exists for that pattern and branch.
+// crease shared by two vertices gets one height (hinge_heights_from_steps); a crease where
+// two shifted staircases disagree means no uniform-thickness Bennett design of this kind
+// exists for that pattern and branch.
 //
 // Units: heights and thickness in pattern units; angles in radians.
 #include <Eigen/Core>
@@ -23,15 +23,9 @@
 
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/thick/vertex_height_steps.hpp"  // HingeHeightConflict
 
 namespace rigidfold {
-
-// Thrown when the per-vertex staircases cannot agree on a shared crease.
-struct HingeHeightConflict : std::invalid_argument {
-  HingeHeightConflict(int edge, int vertex_a, int vertex_b, const std::string& message)
-      : std::invalid_argument(message), edge(edge), vertex_a(vertex_a), vertex_b(vertex_b) {}
-  int edge, vertex_a, vertex_b;
-};
 
 // Inputs: a flat pattern whose interior vertices are all flat-foldable degree-4 vertices;
 // its topology; fold angles (one per edge, radians) of a zero-thickness folded state on the
