@@ -1,7 +1,10 @@
 // rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
+//                    [--curve FILE.csv [--samples K]]
 // Bistability of the symmetric waterbomb base (seed 004): every equilibrium of the spring
 // energy along the 1-DOF symmetric path, each checked (loop closure, dV/dtheta = 0, and
 // stationarity and stability on the unrestricted 2n-crease problem) before it is printed.
+// --curve writes the energy and force-deflection curves (design/waterbomb/waterbomb_curve.hpp):
+// every sample checked against the general model, or nothing is written (exit 3).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,9 +13,14 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/summary_stream.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "design/waterbomb/waterbomb_curve.hpp"
 #include "kernel/math/angle_units.hpp"
+#include "kernel/math/number_text.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/pattern/output_set.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -40,6 +48,8 @@ void add_waterbomb_command(CLI::App& app) {
     int n = 0;
     double theta0_deg = 0, k_ratio = 1, k_m = 1, k_v = 1;
     bool json = false;
+    std::string curve;
+    int samples = 181;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180")->required();
@@ -53,7 +63,10 @@ void add_waterbomb_command(CLI::App& app) {
   km->needs(kv);
   kv->needs(km);
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
-  cmd->callback([a, ratio] {
+  cmd->add_option("--curve", a->curve,
+                  "write energy and force-deflection along the symmetric path (CSV; each sample checked on the general model)");
+  auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve over (0, theta_limit), 3..2001 (default 181)");
+  cmd->callback([a, ratio, samples] {
     if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
     const double limit_deg = 180.0 - 180.0 / a->n;
     if (!std::isfinite(a->theta0_deg) || a->theta0_deg < 0.0 || a->theta0_deg > limit_deg)
@@ -70,6 +83,12 @@ void add_waterbomb_command(CLI::App& app) {
     if (k_m == 0.0 && k_v == 0.0) throw InputError("--k-m", "at least one stiffness must be > 0");
     // Clamp against the last-bit rounding of the degree conversion at the upper limit.
     const double theta0 = std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
+    if (samples->count() > 0 && a->curve.empty()) throw InputError("--samples", "needs --curve");
+    if (a->samples < 3 || a->samples > 2001)
+      throw InputError("--samples", "must be between 3 and 2001, got " + std::to_string(a->samples));
+    OutputSet outputs;
+    if (!a->curve.empty()) outputs.add_output("--curve", a->curve);
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
     // Every number below passed its check in waterbomb_bistability (NoAnswerError -> exit 3).
     const waterbomb::WaterbombBistability r = waterbomb::waterbomb_bistability(a->n, theta0, k_m, k_v);
 
@@ -111,6 +130,24 @@ void add_waterbomb_command(CLI::App& app) {
       for (const auto& e : r.stable_states())
         barriers.push_back({{"from_theta_deg", to_degrees(e.path.theta)}, {"symmetric_path_barrier", cusp_energy - e.path.energy}});
     j["barriers"] = barriers;
+    if (!a->curve.empty()) {
+      const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
+      for (const auto& s : c.samples)
+        if (!s.checked)
+          throw NoAnswerError("--curve: the general model does not confirm the closed form at theta = " +
+                              round_trip_text(to_degrees(s.theta)) + " deg (" + std::to_string(c.unchecked) +
+                              " of " + std::to_string(c.samples.size()) + " samples unchecked)");
+      std::string csv =
+          "theta_deg,gamma_m_deg,gamma_v_deg,energy,height,deflection,force,force_closed_form,min_reduced_hessian_eigenvalue,stable\n";
+      for (const auto& s : c.samples)
+        csv += round_trip_text(to_degrees(s.theta)) + "," + round_trip_text(to_degrees(s.angles.gamma_m)) + "," +
+               round_trip_text(to_degrees(s.angles.gamma_v)) + "," + round_trip_text(s.energy) + "," +
+               round_trip_text(s.height) + "," + round_trip_text(s.deflection) + "," + round_trip_text(s.force) + "," +
+               round_trip_text(s.force_closed_form) + "," + round_trip_text(s.min_eigenvalue) + "," +
+               (s.stable ? "1" : "0") + "\n";
+      outputs.stage(a->curve, csv);
+    }
+    outputs.commit();
     if (a->json) {
       std::cout << j.dump(2) << "\n";
       return;

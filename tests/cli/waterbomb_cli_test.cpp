@@ -2,12 +2,18 @@
 // states that close their loop, and exit 2 naming the flag on bad input.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "design/waterbomb/waterbomb_curve.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 #include "tests/support/run_command.hpp"
@@ -67,6 +73,43 @@ TEST(WaterbombCli, BadInputExitsTwoNamingTheFlag) {
     EXPECT_NE(r.err.find(name), std::string::npos) << flags << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << flags;
   }
+}
+
+// --curve: the CSV holds the library's checked samples digit for digit; bad --samples or
+// --samples without --curve exit 2 and write nothing.
+TEST(WaterbombCli, CurveWritesTheCheckedSamples) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigidfold_waterbomb_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string csv = (dir / "curve.csv").string();
+  const auto r = test::run_command(test::cli() + " waterbomb --n 5 --theta0-deg 50 --k-ratio 2 --curve " + csv + " --samples 21");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto lib = waterbomb::waterbomb_curve(5, to_radians(50.0), 2.0, 1.0, 21);
+  std::ifstream in(csv);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  EXPECT_EQ(line.rfind("theta_deg,gamma_m_deg,gamma_v_deg,energy,", 0), 0u) << line;
+  std::size_t rows = 0;
+  while (std::getline(in, line)) {
+    ASSERT_LT(rows, lib.samples.size());
+    std::stringstream fields(line);
+    std::string theta_text, skip, energy_text;
+    std::getline(fields, theta_text, ',');
+    std::getline(fields, skip, ',');
+    std::getline(fields, skip, ',');
+    std::getline(fields, energy_text, ',');
+    EXPECT_EQ(std::stod(theta_text), to_degrees(lib.samples[rows].theta));
+    EXPECT_EQ(std::stod(energy_text), lib.samples[rows].energy);
+    ++rows;
+  }
+  EXPECT_EQ(rows, lib.samples.size());
+  for (const std::string& flags : {"--curve " + (dir / "bad.csv").string() + " --samples 2", std::string("--samples 11")}) {
+    const auto bad = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 " + flags);
+    EXPECT_EQ(bad.status, 2) << flags;
+    EXPECT_NE(bad.err.find("--samples"), std::string::npos) << bad.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "bad.csv"));
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""Energy and force-deflection of a waterbomb base (seed 004 Figs 2.9-2.11, 3.x).
+
+Usage:
+    rigidfold waterbomb --n 4 --theta0-deg 60 --json > wb.json
+    rigidfold waterbomb --n 4 --theta0-deg 60 --curve wb.csv
+    /usr/bin/python3 python/plot_waterbomb.py wb.csv wb.json --out waterbomb.png [--title TEXT]
+
+Left: spring energy V against the path angle theta (deg), the equilibria of the JSON marked
+(stable states filled, maxima and the flat cusp open). Right: force against deflection
+(push > 0), the general model's reaction force as the line and eq. 3.9's closed form as
+dots; stretches where the loaded symmetric state is unstable (a negative eigenvalue of the
+reduced Hessian, the base buckles out of symmetry) drawn dashed. The flat state splits the
+force curve in two (the path has a corner there: the force jumps).
+
+CSV columns (as written by rigidfold waterbomb --curve):
+    theta_deg,gamma_m_deg,gamma_v_deg,energy,height,deflection,force,force_closed_form,
+    min_reduced_hessian_eigenvalue,stable
+Uses matplotlib's Agg backend (no display needed).
+"""
+import argparse
+import csv
+import json
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+COLUMNS = ["theta_deg", "gamma_m_deg", "gamma_v_deg", "energy", "height", "deflection", "force",
+           "force_closed_form", "min_reduced_hessian_eigenvalue", "stable"]
+
+
+def read_curve(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows or rows[0] != COLUMNS:
+        raise ValueError(f"{path}: header must be {','.join(COLUMNS)}")
+    out = []
+    for i, row in enumerate(rows[1:], start=2):
+        if len(row) != len(COLUMNS):
+            raise ValueError(f"{path}: line {i}: {len(row)} fields, expected {len(COLUMNS)}")
+        try:
+            out.append({k: float(v) for k, v in zip(COLUMNS, row)})
+        except ValueError as e:
+            raise ValueError(f"{path}: line {i}: {e}") from None
+    if len(out) < 3:
+        raise ValueError(f"{path}: fewer than 3 samples")
+    return out
+
+
+def runs(samples, key):
+    """Consecutive samples with the same value of key and on the same side of the flat state."""
+    groups = []
+    for s in samples:
+        tag = (s[key], s["theta_deg"] < 90.0)
+        if groups and groups[-1][0] == tag:
+            groups[-1][1].append(s)
+        else:
+            groups.append((tag, [s]))
+    return groups
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("curve")
+    ap.add_argument("summary")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--title", default=None)
+    a = ap.parse_args()
+    try:
+        samples = read_curve(a.curve)
+        with open(a.summary) as f:
+            summary = json.load(f)
+        equilibria = summary["equilibria"]
+    except (OSError, ValueError, KeyError) as e:
+        print(f"plot_waterbomb: {e}", file=sys.stderr)
+        return 2
+    fig, (ax_e, ax_f) = plt.subplots(1, 2, figsize=(11, 4.2))
+    ax_e.plot([s["theta_deg"] for s in samples], [s["energy"] for s in samples], color="black", lw=1.2)
+    for e in equilibria:
+        stable = e["stable"]
+        ax_e.plot(e["theta_deg"], e["energy"], "o", ms=7, color="tab:blue" if stable else "tab:red",
+                  mfc="tab:blue" if stable else "white")
+        ax_e.annotate(f"{e['theta_deg']:.2f}", (e["theta_deg"], e["energy"]), textcoords="offset points",
+                      xytext=(4, 6), fontsize=8)
+    ax_e.axvline(90.0, color="0.7", lw=0.8, ls=":")
+    ax_e.set_xlabel("theta (deg)")
+    ax_e.set_ylabel("spring energy V")
+    ax_e.set_title("energy on the symmetric path (filled: stable)")
+    for (stable, _), group in runs(samples, "stable"):
+        ax_f.plot([s["deflection"] for s in group], [s["force"] for s in group], color="tab:blue",
+                  ls="-" if stable else "--", lw=1.4)
+    ax_f.plot([s["deflection"] for s in samples[::6]], [s["force_closed_form"] for s in samples[::6]], ".",
+              color="black", ms=3, label="closed form (eq. 3.9)")
+    ax_f.plot([], [], color="tab:blue", label="general model, stable")
+    ax_f.plot([], [], color="tab:blue", ls="--", label="general model, unstable (buckles)")
+    ax_f.axhline(0.0, color="0.7", lw=0.8)
+    # F = V'(theta) / (r sin theta) grows without bound toward theta = 0 (the base standing
+    # upright): show the middle 90% of the forces, with room around them.
+    forces = sorted(s["force"] for s in samples)
+    lo, hi = forces[len(forces) // 20], forces[-1 - len(forces) // 20]
+    pad = 0.3 * max(hi - lo, 1e-12)
+    ax_f.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
+    flat = [s["deflection"] for s in samples if s["theta_deg"] > 90.0]
+    if flat:
+        ax_f.axvline(flat[0], color="0.7", lw=0.8, ls=":")
+    ax_f.set_xlabel("deflection delta (radius-1 base)")
+    ax_f.set_ylabel("force F (push > 0)")
+    ax_f.set_title("force-deflection under displacement control")
+    ax_f.legend(fontsize=8)
+    n, t0 = summary.get("n"), summary.get("theta0_deg")
+    fig.suptitle(a.title or f"waterbomb base n = {n}, rest theta0 = {t0} deg, k_m = {summary.get('k_m')}, "
+                 f"k_v = {summary.get('k_v')}")
+    fig.tight_layout()
+    fig.savefig(a.out, dpi=120)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
