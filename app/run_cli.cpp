@@ -22,6 +22,7 @@ int run_cli(int argc, const char* const* argv) {
   add_string_command(app);
   add_import_command(app);
   add_assignments_command(app);
+  add_energy_command(app);
   add_waterbomb_command(app);
   // No floating-point flag of any command takes NaN or +-inf (app/number_flags.hpp).
   require_finite_numbers(app);

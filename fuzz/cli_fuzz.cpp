@@ -3,7 +3,7 @@
 //   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|check + flags
+//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check + flags
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
 // error", an exception that is not bad input) aborts, so libFuzzer reports it with the
 // input, like a crash.
@@ -33,6 +33,9 @@ struct NullBuffer : std::streambuf {
 
 // The bundled pattern that the angles and flags targets fold and trace.
 const std::string kPattern = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_3x3_perturbed.fold";
+// The bundled waterbomb base and its rest state, for the energy command's flags.
+const std::string kWaterbomb = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold";
+const std::string kWaterbombRest = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/energy/waterbomb_base_rest60.json";
 
 // The private temporary directory every run writes in (created once). The flags target
 // also makes it the working directory, so that the relative paths its tokens may name stay
@@ -62,13 +65,14 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"rigidfold"};
   if (size == 0) return args;
-  switch (data[0] % 7) {
+  switch (data[0] % 8) {
     case 0: args.insert(args.end(), {"generate"}); break;
     case 1: args.insert(args.end(), {"trace", kPattern}); break;
     case 2: args.insert(args.end(), {"trace", kPattern, "--general"}); break;
     case 3: args.insert(args.end(), {"vertex"}); break;
     case 4: args.insert(args.end(), {"waterbomb"}); break;
     case 5: args.insert(args.end(), {"assignments", kPattern}); break;
+    case 6: args.insert(args.end(), {"energy", kWaterbomb, "--rest", kWaterbombRest}); break;
     default: args.insert(args.end(), {"check", kPattern}); break;
   }
   std::string token;

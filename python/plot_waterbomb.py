@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Energy and force-deflection of a waterbomb base (seed 004 Figs 2.9-2.11, 3.x).
+"""Energy and force against apex height of a waterbomb base (seed 004 Figs 2.9-2.11, 3.x).
 
 Usage:
     rigidfold waterbomb --n 4 --theta0-deg 60 --json > wb.json
@@ -7,8 +7,8 @@ Usage:
     /usr/bin/python3 python/plot_waterbomb.py wb.csv wb.json --out waterbomb.png [--title TEXT]
 
 Left: spring energy V against the path angle theta (deg), the equilibria of the JSON marked
-(stable states filled, maxima and the flat cusp open). Right: force against deflection
-(push > 0), the general model's reaction force as the line and eq. 3.9's closed form as
+(stable states filled, maxima and the flat cusp open). Right: force against the apex
+height h (push > 0; h falls as the base is pushed), the general model's reaction force as the line and eq. 3.9's closed form as
 dots; stretches where the loaded symmetric state is unstable (a negative eigenvalue of the
 reduced Hessian, the base buckles out of symmetry) drawn dashed. The flat state splits the
 force curve in two (the path has a corner there: the force jumps).
@@ -90,9 +90,9 @@ def main():
     ax_e.set_ylabel("spring energy V")
     ax_e.set_title("energy on the symmetric path (filled: stable)")
     for (stable, _), group in runs(samples, "stable"):
-        ax_f.plot([s["deflection"] for s in group], [s["force"] for s in group], color="tab:blue",
+        ax_f.plot([s["height"] for s in group], [s["force"] for s in group], color="tab:blue",
                   ls="-" if stable else "--", lw=1.4)
-    ax_f.plot([s["deflection"] for s in samples[::6]], [s["force_closed_form"] for s in samples[::6]], ".",
+    ax_f.plot([s["height"] for s in samples[::6]], [s["force_closed_form"] for s in samples[::6]], ".",
               color="black", ms=3, label="closed form (eq. 3.9)")
     ax_f.plot([], [], color="tab:blue", label="general model, stable")
     ax_f.plot([], [], color="tab:blue", ls="--", label="general model, unstable (buckles)")
@@ -103,12 +103,10 @@ def main():
     lo, hi = forces[len(forces) // 20], forces[-1 - len(forces) // 20]
     pad = 0.3 * max(hi - lo, 1e-12)
     ax_f.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
-    flat = [s["deflection"] for s in samples if s["theta_deg"] > 90.0]
-    if flat:
-        ax_f.axvline(flat[0], color="0.7", lw=0.8, ls=":")
-    ax_f.set_xlabel("deflection delta (radius-1 base)")
+    ax_f.axvline(0.0, color="0.7", lw=0.8, ls=":")  # the flat state: h = 0
+    ax_f.set_xlabel("apex height h (radius-1 base; flat at 0)")
     ax_f.set_ylabel("force F (push > 0)")
-    ax_f.set_title("force-deflection under displacement control")
+    ax_f.set_title("force against apex height (displacement control)")
     ax_f.legend(fontsize=8)
     n, t0 = summary.get("n"), summary.get("theta0_deg")
     fig.suptitle(a.title or f"waterbomb base n = {n}, rest theta0 = {t0} deg, k_m = {summary.get('k_m')}, "

@@ -35,11 +35,12 @@ for name in square_twist_30_type1m square_twist_30_type2m; do
   /usr/bin/python3 python/plot_bifurcation.py "out/report/branches/$name.check.json" out/report/branches/"$name".b*.csv \
     --x-edge 0 --edges 12,1,7,6 --out "out/report/figures/${name}_bifurcations.png" >/dev/null
 done
-# Waterbomb bistability (seed 004, Fig 2.9 case: n = 4, rest at 60 deg, equal springs; and a
-# six-crease-pair base with stiffer mountains): stable states, energy and force-deflection,
-# every sample checked on the general 2n-crease model.
+# Waterbomb bistability (seed 004; n = 3, 4 (Fig 2.9: rest at 60 deg, equal springs) and 10):
+# stable states, energy and force against apex height, every sample checked on the general
+# 2n-crease model; and the bundled base (a FOLD file, no waterbomb code on that path) searched
+# for its stable states by the general energy command.
 mkdir -p out/report/waterbomb
-for spec in "4 60 1" "6 45 2"; do
+for spec in "3 60 1" "4 60 1" "10 45 1"; do
   read -r n t0 kr <<<"$spec"
   stem="out/report/waterbomb/waterbomb_n${n}_theta${t0}_k${kr}"
   ./build/app/rigidfold waterbomb --n "$n" --theta0-deg "$t0" --k-ratio "$kr" --json > "$stem.json"
@@ -47,6 +48,8 @@ for spec in "4 60 1" "6 45 2"; do
   /usr/bin/python3 python/plot_waterbomb.py "$stem.csv" "$stem.json" \
     --out "out/report/figures/$(basename "$stem").png" >/dev/null
 done
+./build/app/rigidfold energy data/bundled/waterbomb_base.fold --rest data/energy/waterbomb_base_rest60.json \
+  --json > out/report/waterbomb/waterbomb_base_energy.json
 # Mountain-valley classes (seed 003 §3.2-3.3): every flat-folding assignment of units P and Q
 # and of the square twist, in classes under the pattern's symmetry and the global flip, each
 # with its rigid-foldability verdict.
