@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libceres-dev libnlopt-dev libnlopt-cxx-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
-  pybind11-dev python3-dev python3-matplotlib python3-numpy
+  pybind11-dev python3-dev python3-matplotlib python3-numpy python3-scipy python3-pytest
   libboost-dev libfcl-dev libspectra-dev libexpat1-dev clang libclang-rt-14-dev
 )
 

@@ -1,0 +1,52 @@
+// rigidfold._core: the extension module entry and the exception translation. Each area binds
+// itself in its own file (bind_*.cpp).
+#include <pybind11/pybind11.h>
+
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "python/bindings/bindings.hpp"
+
+namespace rigidfold::python {
+
+py::object json_to_python(const nlohmann::ordered_json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+}  // namespace rigidfold::python
+
+PYBIND11_MODULE(_core, m) {
+  namespace py = pybind11;
+  using namespace rigidfold::python;
+  m.doc() =
+      "rigidfold kernel bindings. Units: fold angles and sector angles in radians; FOLD sign "
+      "(valley > 0, mountain < 0, 0 flat); lengths in the file's units.";
+
+  // Bad input: the same place-naming message as the CLI's exit-2 line ("FILE: JSON_PATH: what").
+  static py::exception<rigidfold::InputError> input_error(m, "InputError", PyExc_ValueError);
+  input_error.doc() =
+      "Bad input (file, JSON, parameter). str(e) names the place, e.g. "
+      "'bad.fold: edges_vertices[2][1]: vertex index 9 out of range (4 vertices)'; e.place is the place alone.";
+  // No result passes its own check (the CLI's exit status 3); e.residual is the best residual reached.
+  static py::exception<rigidfold::NoAnswerError> no_answer_error(m, "NoAnswerError", PyExc_RuntimeError);
+  no_answer_error.doc() =
+      "The computation ran on valid input but no result passes its own check; e.residual is the "
+      "best residual reached (NaN when none), in the units the message states.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const rigidfold::InputError& e) {
+      py::object exc = py::handle(input_error.ptr())(py::str(e.what()));
+      exc.attr("place") = py::str(e.place());
+      PyErr_SetObject(input_error.ptr(), exc.ptr());
+    } catch (const rigidfold::NoAnswerError& e) {
+      py::object exc = py::handle(no_answer_error.ptr())(py::str(e.what()));
+      exc.attr("residual") = py::float_(e.residual());
+      PyErr_SetObject(no_answer_error.ptr(), exc.ptr());
+    }
+  });
+
+  bind_pattern(m);
+  bind_analysis(m);
+  bind_vertex(m);
+  bind_design(m);
+}

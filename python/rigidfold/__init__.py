@@ -1,0 +1,79 @@
+"""rigidfold: exact kinematics of rigid origami (Python bindings of the C++ kernel).
+
+Set-up from the project root, after building: ``PYTHONPATH=build/python /usr/bin/python3``.
+
+Units and signs are the kernel's: fold angles and sector angles in radians, FOLD sign
+(valley > 0, mountain < 0, 0 flat); lengths in the pattern file's units. Dict keys ending in
+``_deg`` (in the objects ``check`` returns, which are the CLI's JSON) are degrees.
+
+Patterns:   load, parse_fold, save, CreasePattern (.vertices, .edges, .assignments, .faces,
+            .fold_angles), bundled_examples, miura_ori, miura_fold_angles, square_twist,
+            waterbomb_base, corrugated_unit
+Analysis:   check, trace, enumerate_assignments
+Vertex:     flat_fold_angles, flat_fold_multipliers
+Closure:    ClosureSystem, closure_jacobian
+Design:     waterbomb_bistability
+Errors:     InputError (a ValueError; the message names the file and the place in it, e.place
+            the place alone), NoAnswerError (a RuntimeError; e.residual)
+Figures:    rigidfold.plot (matplotlib)
+"""
+
+from rigidfold._core import (
+    ClosureSystem,
+    CreasePattern,
+    InputError,
+    NoAnswerError,
+    bundled_examples,
+    check,
+    corrugated_unit,
+    enumerate_assignments,
+    flat_fold_angles,
+    flat_fold_multipliers,
+    load,
+    miura_fold_angles,
+    miura_ori,
+    parse_fold,
+    save,
+    square_twist,
+    trace,
+    waterbomb_base,
+    waterbomb_bistability,
+)
+
+
+def closure_jacobian(pattern, fold_angles, fixed=()):
+    """Residual and exact Jacobian of the pattern's loop-closure system at per-edge fold angles.
+
+    fold_angles: (E,) radians, FOLD sign (entries of edges that are not free creases are ignored).
+    fixed: [(edge, radians)] creases held at a value (they are then not unknowns).
+    Returns (residual (rows,) radians, jacobian scipy.sparse.csc_matrix (rows, unknowns),
+    free_edges: the edge of each Jacobian column). Needs scipy.
+    """
+    system = ClosureSystem(pattern, list(fixed))
+    x = system.unknowns_from_edges(fold_angles)
+    residual, jacobian = system.evaluate(x)
+    return residual, jacobian, system.free_edges
+
+
+__all__ = [
+    "ClosureSystem",
+    "CreasePattern",
+    "InputError",
+    "NoAnswerError",
+    "bundled_examples",
+    "check",
+    "closure_jacobian",
+    "corrugated_unit",
+    "enumerate_assignments",
+    "flat_fold_angles",
+    "flat_fold_multipliers",
+    "load",
+    "miura_fold_angles",
+    "miura_ori",
+    "parse_fold",
+    "save",
+    "square_twist",
+    "trace",
+    "waterbomb_base",
+    "waterbomb_bistability",
+]

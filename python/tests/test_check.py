@@ -1,0 +1,55 @@
+"""check(): the kernel's verdict, equal to what `rigidfold check --json` prints."""
+import pytest
+
+import rigidfold
+from conftest import bundled
+
+TIMING_KEYS = {"seconds", "exploration_seconds"}
+
+
+def without_timings(value):
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items() if k not in TIMING_KEYS}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+def test_corrugated_p_is_foldable_with_one_dof(cli):
+    path = bundled("corrugated_p_rigid.fold")
+    r = rigidfold.check(rigidfold.load(path))
+    assert r["verdict_class"] == "foldable"
+    assert r["rigidly_foldable"] is True
+    assert r["is_proof"] is True
+    assert r["dof"] == 1
+    assert r["model"] == "multiplier-propagation"
+    assert r["reason"].startswith("rigidly foldable, 1 DOF")
+    expected = cli("check", path)
+    assert r["verdict_class"] == expected["verdict_class"]
+    assert r["reason"] == expected["reason"]
+
+
+@pytest.mark.parametrize("name,use_assignment", [
+    ("corrugated_p_rigid.fold", True),
+    ("corrugated_q_rigid.fold", False),
+    ("square_twist_30_type1.fold", True),
+    ("square_twist_30_type2m.fold", True),
+    ("miura_3x3_perturbed.fold", True),
+])
+def test_check_equals_the_cli_bit_for_bit(cli, name, use_assignment):
+    path = bundled(name)
+    r = rigidfold.check(rigidfold.load(path), use_assignment=use_assignment, source=path)
+    args = ["check", path] + ([] if use_assignment else ["--ignore-assignment"])
+    expected = cli(*args)
+    del expected["file"]
+    assert without_timings(r) == without_timings(expected)
+
+
+def test_not_foldable_assignment_is_a_proof():
+    # Square twist type 1 (seed 001): its assignment admits no rigid motion.
+    r = rigidfold.check(rigidfold.square_twist("type1"))
+    assert r["verdict_class"] == "not foldable (proof)"
+    assert r["is_proof"] is True and r["dof"] == 0
+    assert r["obstruction"] is not None
+    free = rigidfold.check(rigidfold.square_twist("type1"), use_assignment=False)
+    assert free["rigidly_foldable"] is True

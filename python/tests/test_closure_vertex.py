@@ -1,0 +1,79 @@
+"""The closure Jacobian (scipy.sparse) against finite differences, and the flat-foldable
+degree-4 closed forms against the vertex closure condition."""
+import math
+
+import numpy as np
+import pytest
+
+import rigidfold
+
+scipy_sparse = pytest.importorskip("scipy.sparse", reason="python3-scipy is not installed")
+
+
+def rx(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
+
+
+def rz(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def vertex_product(rho, sectors):
+    r = np.eye(3)
+    for a, b in zip(rho, sectors):
+        r = r @ rx(a) @ rz(b)
+    return r
+
+
+def test_jacobian_equals_finite_difference_of_residual():
+    pattern = rigidfold.square_twist("type2m")
+    rng = np.random.default_rng(7)
+    angles = rng.uniform(-1.0, 1.0, pattern.num_edges)
+    residual, jac, free = rigidfold.closure_jacobian(pattern, angles)
+    system = rigidfold.ClosureSystem(pattern)
+    x = system.unknowns_from_edges(angles)
+    assert scipy_sparse.issparse(jac)
+    assert jac.shape == (system.num_rows, system.num_unknowns) == (3 * system.num_vertices, len(free))
+    assert np.array_equal(residual, system.residual(x))
+    assert np.max(np.abs(residual)) > 1e-3  # a random point does not close
+    h = 1e-6
+    fd = np.empty(jac.shape)
+    for k in range(len(x)):
+        step = np.zeros_like(x)
+        step[k] = h
+        fd[:, k] = (system.residual(x + step) - system.residual(x - step)) / (2 * h)
+    error = np.max(np.abs(jac.toarray() - fd))
+    assert error <= 1e-8, error
+
+
+def test_jacobian_at_a_folded_miura_has_one_dimensional_kernel():
+    params = dict(rows=2, cols=2, alpha=math.radians(60))
+    pattern = rigidfold.miura_ori(**params)
+    closed = np.nan_to_num(rigidfold.miura_fold_angles(pattern, rho_straight=1.0, **params))
+    residual, jac, _ = rigidfold.closure_jacobian(pattern, closed)
+    assert np.max(np.abs(residual)) <= 1e-14
+    s = np.linalg.svd(jac.toarray(), compute_uv=False)
+    n = jac.shape[1]
+    rank = int(np.sum(s > 1e-9 * s[0]))
+    assert n - rank == 1
+
+
+def test_flat_fold_angles_close_the_vertex():
+    a = math.radians(60)
+    sectors = [a, a, math.pi - a, math.pi - a]
+    for mode in ("equal02", "equal13"):
+        for rho in (0.3, -1.2, 2.5):
+            angles = rigidfold.flat_fold_angles(sectors, mode, rho)
+            assert angles.shape == (4,)
+            assert angles[0] == rho
+            assert np.max(np.abs(vertex_product(angles, sectors) - np.eye(3))) <= 1e-14
+    m = rigidfold.flat_fold_angles(sectors, "equal02", 0.7)
+    assert m[2] == pytest.approx(m[0], abs=1e-15) and m[3] == pytest.approx(-m[1], abs=1e-15)
+    w = rigidfold.flat_fold_multipliers(sectors, "equal02")
+    assert w["odd_crease"] == 1
+    with pytest.raises(ValueError):
+        rigidfold.flat_fold_angles([1.0, 1.0, 1.0, 1.0], "equal02", 0.5)
+    with pytest.raises(rigidfold.InputError):
+        rigidfold.flat_fold_angles(sectors, "sideways", 0.5)

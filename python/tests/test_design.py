@@ -1,0 +1,45 @@
+"""enumerate_assignments and waterbomb_bistability, against seed 003 and the CLI."""
+import math
+
+import pytest
+
+import rigidfold
+from conftest import bundled
+
+
+def test_unit_p_has_10_classes_4_foldable():
+    r = rigidfold.enumerate_assignments(rigidfold.load(bundled("corrugated_p_rigid.fold")))
+    assert r["assignments"] == 32
+    assert r["class_count"] == 10
+    assert r["foldable_classes"] == 4
+    assert r["complete"] is True
+    assert sum(c["orbit_size"] for c in r["classes"]) == 32
+    assert sum(c["verdict_class"] == "foldable" for c in r["classes"]) == 4
+    assert all(len(c["letters"]) == len(r["creases"]) for c in r["classes"])
+
+
+def test_square_twist_assignments_match_cli(cli):
+    path = bundled("square_twist_30_type1.fold")
+    r = rigidfold.enumerate_assignments(rigidfold.load(path))
+    expected = cli("assignments", path)
+    assert (r["assignments"], r["class_count"]) == (16, 4)
+    assert r["foldable_classes"] == 2
+    assert r["assignments"] == expected["assignments"]
+    assert r["class_count"] == expected["classes"]
+    assert r["foldable_classes"] == expected["foldable_classes"]
+    assert [(c["letters"], c["orbit_size"], c["verdict_class"], c["dof"]) for c in r["classes"]] == [
+        (c["letters"], c["orbit_size"], c["verdict"], c["dof"]) for c in expected["listed"]]
+
+
+def test_waterbomb_bistability_matches_cli(cli):
+    r = rigidfold.waterbomb_bistability(4, math.radians(60))
+    expected = cli("waterbomb", "--n", "4", "--theta0-deg", "60")
+    assert len(r["stable_states"]) == 2
+    assert [e["kind"] for e in r["equilibria"]] == [e["kind"] for e in expected["equilibria"]]
+    for got, want in zip(r["equilibria"], expected["equilibria"]):
+        assert math.degrees(got["theta"]) == pytest.approx(want["theta_deg"], abs=1e-12)
+        assert got["energy"] == want["energy"]
+        assert got["closure_residual"] <= 1e-12
+    with pytest.raises(rigidfold.InputError) as info:
+        rigidfold.waterbomb_bistability(2, 0.5)
+    assert info.value.place == "n"

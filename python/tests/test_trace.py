@@ -1,0 +1,52 @@
+"""trace(): fold angles per step (radians, FOLD sign) against the kernel's Miura closed form."""
+import math
+
+import numpy as np
+import pytest
+
+import rigidfold
+
+PARAMS = dict(rows=4, cols=4, alpha=math.radians(60))
+
+
+def straight_drive(pattern):
+    probe = rigidfold.miura_fold_angles(pattern, rho_straight=0.5, **PARAMS)
+    return int(np.flatnonzero(probe == 0.5)[0])
+
+
+def closed_form_error(pattern, branch):
+    error = 0.0
+    for s, rho in enumerate(branch["drive"]):
+        closed = rigidfold.miura_fold_angles(pattern, rho_straight=rho, **PARAMS)
+        known = ~np.isnan(closed)
+        assert known.sum() > 0
+        error = max(error, float(np.max(np.abs(branch["fold_angles"][s, known] - closed[known]))))
+    return error
+
+
+@pytest.mark.parametrize("force_general", [False, True])
+def test_miura_trace_matches_closed_form(force_general):
+    pattern = rigidfold.miura_ori(**PARAMS)
+    drive = straight_drive(pattern)
+    steps = 30 if force_general else 40
+    result = rigidfold.trace(pattern, drive=drive, to=math.radians(150), steps=steps, force_general=force_general)
+    assert result["model"] == ("general-loop-closure" if force_general else "multiplier-propagation")
+    (branch,) = result["branches"]
+    assert branch["traced"] and branch["drive_edge"] == drive
+    assert branch["fold_angles"].shape == (steps, pattern.num_edges)
+    assert branch["drive"].shape == (steps,)
+    assert np.array_equal(branch["fold_angles"][:, drive], branch["drive"])
+    assert branch["drive"][-1] == pytest.approx(math.radians(150), abs=1e-12)
+    assert np.all(np.diff(branch["drive"]) > 0)
+    assert closed_form_error(pattern, branch) <= 1e-10
+    assert np.max(branch["residual"]) <= 1e-10
+    assert branch["folded_vertices"].shape == (steps, pattern.num_vertices, 3)
+    # Folded: the sheet has left the plane.
+    assert np.ptp(branch["folded_vertices"][-1][:, 2]) > 0.5
+
+
+def test_trace_bad_drive_raises_input_error():
+    pattern = rigidfold.miura_ori(**PARAMS)
+    with pytest.raises(rigidfold.InputError) as info:
+        rigidfold.trace(pattern, drive=pattern.num_edges + 5)
+    assert info.value.place == "drive"
