@@ -53,3 +53,29 @@ def test_not_foldable_assignment_is_a_proof():
     assert r["obstruction"] is not None
     free = rigidfold.check(rigidfold.square_twist("type1"), use_assignment=False)
     assert free["rigidly_foldable"] is True
+
+
+def test_check_releases_the_gil():
+    # The general model on the modified square twist type 1M takes ~0.5 s. While it runs, this
+    # thread must keep running Python code: it could not if the GIL were held.
+    import threading
+    import time
+
+    pattern = rigidfold.square_twist("type1m")
+    span = {}
+
+    def work():
+        span["start"] = time.perf_counter()
+        span["result"] = rigidfold.check(pattern)
+        span["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=work)
+    stamps = []
+    worker.start()
+    while worker.is_alive():
+        stamps.append(time.perf_counter())
+    worker.join()
+    assert span["end"] - span["start"] > 0.1
+    inside = [t for t in stamps if span["start"] + 0.02 < t < span["end"] - 0.02]
+    assert len(inside) > 1000
+    assert span["result"]["verdict_class"] == "not foldable (evidence)"

@@ -63,16 +63,20 @@ def test_jacobian_at_a_folded_miura_has_one_dimensional_kernel():
 def test_flat_fold_angles_close_the_vertex():
     a = math.radians(60)
     sectors = [a, a, math.pi - a, math.pi - a]
-    for mode in ("equal02", "equal13"):
+    # equal13 of this vertex (d = 0) folds the straight line 1-3 alone: crease 0 stays flat.
+    for mode, driver in (("equal02", 0), ("equal13", 1)):
         for rho in (0.3, -1.2, 2.5):
-            angles = rigidfold.flat_fold_angles(sectors, mode, rho)
+            angles = rigidfold.flat_fold_angles(sectors, mode, rho, driver=driver)
             assert angles.shape == (4,)
-            assert angles[0] == rho
+            assert angles[driver] == rho
             assert np.max(np.abs(vertex_product(angles, sectors) - np.eye(3))) <= 1e-14
     m = rigidfold.flat_fold_angles(sectors, "equal02", 0.7)
     assert m[2] == pytest.approx(m[0], abs=1e-15) and m[3] == pytest.approx(-m[1], abs=1e-15)
     w = rigidfold.flat_fold_multipliers(sectors, "equal02")
     assert w["odd_crease"] == 1
+    assert np.array_equal(rigidfold.flat_fold_angles(sectors, "equal13", 0.4, driver=1)[[0, 2]], [0.0, 0.0])
+    with pytest.raises(ValueError, match="stays flat"):
+        rigidfold.flat_fold_angles(sectors, "equal13", 0.5, driver=0)
     with pytest.raises(ValueError):
         rigidfold.flat_fold_angles([1.0, 1.0, 1.0, 1.0], "equal02", 0.5)
     with pytest.raises(rigidfold.InputError):

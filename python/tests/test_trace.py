@@ -30,7 +30,7 @@ def test_miura_trace_matches_closed_form(force_general):
     drive = straight_drive(pattern)
     steps = 30 if force_general else 40
     result = rigidfold.trace(pattern, drive=drive, to=math.radians(150), steps=steps, force_general=force_general)
-    assert result["model"] == ("general-loop-closure" if force_general else "multiplier-propagation")
+    assert result["model"].startswith("general" if force_general else "multiplier")
     (branch,) = result["branches"]
     assert branch["traced"] and branch["drive_edge"] == drive
     assert branch["fold_angles"].shape == (steps, pattern.num_edges)
