@@ -12,6 +12,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/vertex/flat_foldable_multipliers.hpp"
+#include "kernel/vertex/miura_vertex.hpp"
 #include "python/bindings/bindings.hpp"
 
 namespace rigidfold::python {
@@ -70,6 +71,32 @@ void bind_vertex(py::module_& m) {
       py::arg("sectors"), py::arg("mode"), py::arg("tol") = 1e-9,
       "Tan-half-angle multipliers of a flat-foldable degree-4 vertex (sectors in radians): direction w with "
       "tan(rho_i/2) = w_i * tau, step k_i = w_{i+1}/w_i, from_first m_i = w_i/w_0, odd_crease (-1 if none).");
+
+  m.def(
+      "miura_vertex",
+      [](double alpha1, double alpha2, double theta) {
+        const MiuraVertexState v = miura_vertex_checked(alpha1, alpha2, theta);
+        py::list names;
+        for (std::string_view n : kMiuraCreaseNames) names.append(py::str(std::string(n)));
+        py::dict d;
+        d["phi"] = v.phi;
+        d["psi"] = v.psi;
+        d["theta"] = v.theta;
+        d["theta_limit"] = v.theta_limit;
+        d["crease_names"] = names;
+        d["fold_angles"] = Eigen::Vector4d(v.fold_angles[0], v.fold_angles[1], v.fold_angles[2], v.fold_angles[3]);
+        d["sectors"] = Eigen::Vector4d(v.sectors[0], v.sectors[1], v.sectors[2], v.sectors[3]);
+        d["flat_directions"] =
+            Eigen::Vector4d(v.flat_directions[0], v.flat_directions[1], v.flat_directions[2], v.flat_directions[3]);
+        d["closure_residual"] = check_miura_vertex(v).closure_residual;
+        return d;
+      },
+      py::arg("alpha1"), py::arg("alpha2"), py::arg("theta"),
+      "Asymmetric Miura vertex (seed 000; `rigidfold vertex miura`): alpha1, alpha2 in (0, pi/2) radians, theta "
+      "the input (radians, |theta| <= theta_limit; half the fold angle of the incoming spinal crease). Returns a "
+      "dict: phi, psi, theta_limit (rad), crease_names, fold_angles (numpy (4,), rad, valley > 0), sectors (rad), "
+      "flat_directions (rad), closure_residual (rad). Checked before it returns: raises NoAnswerError (with the "
+      "residual) if the closed form misses its check, InputError/ValueError for parameters out of range.");
 
   py::class_<PatternClosure>(m, "ClosureSystem",
                              "The loop-closure system of a whole pattern: unknowns are the fold angles (radians, "

@@ -10,7 +10,7 @@ Patterns:   load, parse_fold, save, CreasePattern (.vertices, .edges, .assignmen
             .fold_angles), bundled_examples, miura_ori, miura_fold_angles, square_twist,
             waterbomb_base, corrugated_unit
 Analysis:   check, trace, enumerate_assignments
-Vertex:     flat_fold_angles, flat_fold_multipliers
+Vertex:     flat_fold_angles, flat_fold_multipliers, miura_vertex
 Closure:    ClosureSystem, closure_jacobian
 Design:     waterbomb_bistability
 Errors:     InputError (a ValueError; the message names the file and the place in it, e.place
@@ -32,6 +32,7 @@ from rigidfold._core import (
     load,
     miura_fold_angles,
     miura_ori,
+    miura_vertex,
     parse_fold,
     save,
     square_twist,
@@ -70,6 +71,7 @@ __all__ = [
     "load",
     "miura_fold_angles",
     "miura_ori",
+    "miura_vertex",
     "parse_fold",
     "save",
     "square_twist",

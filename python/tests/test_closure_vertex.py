@@ -81,3 +81,24 @@ def test_flat_fold_angles_close_the_vertex():
         rigidfold.flat_fold_angles([1.0, 1.0, 1.0, 1.0], "equal02", 0.5)
     with pytest.raises(rigidfold.InputError):
         rigidfold.flat_fold_angles(sectors, "sideways", 0.5)
+
+
+def test_miura_vertex_equals_cli_and_closes(cli):
+    v = rigidfold.miura_vertex(math.radians(50), math.radians(70), math.radians(40))
+    expected = cli("vertex", "miura", "--alpha1", "50", "--alpha2", "70", "--theta", "40")
+    assert math.degrees(v["phi"]) == pytest.approx(expected["phi_deg"], abs=1e-12)
+    assert math.degrees(v["psi"]) == pytest.approx(expected["psi_deg"], abs=1e-12)
+    assert math.degrees(v["theta_limit"]) == pytest.approx(expected["theta_limit_deg"], abs=1e-12)
+    assert v["crease_names"] == [c["crease"] for c in expected["fold_angles_deg"]]
+    assert np.allclose(np.degrees(v["fold_angles"]), [c["fold_angle_deg"] for c in expected["fold_angles_deg"]],
+                       rtol=0, atol=1e-12)
+    assert v["closure_residual"] == expected["closure_residual_rad"]
+    assert np.max(np.abs(vertex_product(v["fold_angles"], v["sectors"]) - np.eye(3))) <= 1e-14
+    assert v["fold_angles"][2] == pytest.approx(2 * math.radians(40), abs=1e-15)  # rho_c = 2 theta
+
+
+def test_error_classes():
+    assert issubclass(rigidfold.InputError, ValueError)
+    assert issubclass(rigidfold.NoAnswerError, RuntimeError)
+    with pytest.raises(ValueError, match="theta_limit"):
+        rigidfold.miura_vertex(math.radians(50), math.radians(70), math.radians(80))  # beyond theta_limit
