@@ -13,9 +13,11 @@
 #include "data/generators/miura.hpp"
 #include "data/generators/square_twist.hpp"
 #include "data/generators/waterbomb.hpp"
+#include "kernel/pattern/assignment.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
+#include "kernel/pattern/validate_pattern.hpp"
 #include "python/bindings/bindings.hpp"
 
 namespace rigidfold::python {
@@ -64,12 +66,64 @@ gen::SquareTwistParams twist_params(double twist, double side, double pleat) {
   return p;
 }
 
+// A pattern from arrays, completed and validated as a FOLD file's key frame is.
+CreasePattern pattern_from_arrays(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                                  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& edges,
+                                  const std::optional<std::vector<std::string>>& assignments,
+                                  const std::optional<std::vector<std::vector<int>>>& faces,
+                                  const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& fold_angles,
+                                  const std::string& source) {
+  if (vertices.ndim() != 2 || (vertices.shape(1) != 2 && vertices.shape(1) != 3))
+    throw InputError(source + ": vertices", "must be an array of shape (N, 2) or (N, 3)");
+  if (edges.ndim() != 2 || edges.shape(1) != 2) throw InputError(source + ": edges", "must be an array of shape (E, 2)");
+  CreasePattern p;
+  const auto v = vertices.unchecked<2>();
+  p.coords_2d = vertices.shape(1) == 2;
+  for (py::ssize_t i = 0; i < v.shape(0); ++i)
+    p.vertices.emplace_back(v(i, 0), v(i, 1), p.coords_2d ? 0.0 : v(i, 2));
+  const auto e = edges.unchecked<2>();
+  for (py::ssize_t i = 0; i < e.shape(0); ++i) {
+    for (int k = 0; k < 2; ++k)
+      if (e(i, k) < std::numeric_limits<int>::min() || e(i, k) > std::numeric_limits<int>::max())
+        throw InputError(source + ": edges[" + std::to_string(i) + "][" + std::to_string(k) + "]", "out of range");
+    p.edges.push_back({static_cast<int>(e(i, 0)), static_cast<int>(e(i, 1))});
+  }
+  if (assignments) {
+    if (assignments->size() != p.edges.size())
+      throw InputError(source + ": assignments", "has " + std::to_string(assignments->size()) + " letters for " +
+                                                     std::to_string(p.edges.size()) + " edges");
+    for (std::size_t i = 0; i < assignments->size(); ++i) {
+      const std::string& a = (*assignments)[i];
+      const std::optional<Assignment> letter = a.size() == 1 ? assignment_from_letter(a[0]) : std::nullopt;
+      if (!letter) throw InputError(source + ": assignments[" + std::to_string(i) + "]", "'" + a + "' is not a FOLD letter");
+      p.assignments.push_back(*letter);
+    }
+  }
+  if (faces) p.faces = *faces;
+  if (fold_angles) {
+    if (fold_angles->ndim() != 1 || fold_angles->shape(0) != static_cast<py::ssize_t>(p.edges.size()))
+      throw InputError(source + ": fold_angles", "must be an array of shape (E,)");
+    const auto f = fold_angles->unchecked<1>();
+    for (py::ssize_t i = 0; i < f.shape(0); ++i)
+      p.fold_angles.push_back(std::isnan(f(i)) ? std::nullopt : std::optional<double>(f(i)));
+    p.fold_angles_in_file = true;
+  }
+  complete_and_validate(p, source);
+  return p;
+}
+
 }  // namespace
 
 void bind_pattern(py::module_& m) {
   py::class_<CreasePattern>(m, "CreasePattern",
                             "A validated crease pattern (FOLD key frame). Arrays are copies; lengths in the "
                             "file's units, fold angles in radians (FOLD sign: valley > 0, mountain < 0).")
+      .def(py::init(&pattern_from_arrays), py::arg("vertices"), py::arg("edges"), py::arg("assignments") = py::none(),
+           py::arg("faces") = py::none(), py::arg("fold_angles") = py::none(), py::arg("source") = "arrays",
+           "A pattern from arrays: vertices (N, 2) or (N, 3), edges (E, 2) vertex indices, assignments (E letters "
+           "M V F U B C J; default as a FOLD file without edges_assignment), faces (CCW vertex lists; default "
+           "derived), fold_angles (E,) radians (NaN: none). Completed and validated as a FOLD file; raises "
+           "InputError naming `source` and the place.")
       .def_property_readonly("vertices", &vertices_array,
                              "numpy (N, 3) float64: reference coordinates in the file's units (z = 0 for 2D input)")
       .def_property_readonly("edges", &edges_array, "numpy (E, 2) int64: vertex indices of each edge")

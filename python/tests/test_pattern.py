@@ -78,3 +78,31 @@ def test_missing_file_and_bad_parameter():
     assert info.value.place == "alpha"
     with pytest.raises(rigidfold.InputError, match="my-text"):
         rigidfold.parse_fold("{", source="my-text")
+
+
+def test_pattern_from_arrays_equals_the_loaded_file():
+    p = rigidfold.load(bundled("corrugated_p_rigid.fold"))
+    q = rigidfold.CreasePattern(p.vertices[:, :2], p.edges, p.assignments)
+    assert q.coords_2d
+    assert np.array_equal(q.vertices, p.vertices)
+    assert q.num_faces == p.num_faces
+    assert rigidfold.check(q)["reason"] == rigidfold.check(p)["reason"]
+    # Without letters: B on the boundary, U inside (as a FOLD file without edges_assignment).
+    u = rigidfold.CreasePattern(p.vertices, p.edges)
+    assert set(u.assignments) == {"B", "U"}
+    assert u.assignments.count("B") == p.assignments.count("B")
+    angles = np.full(p.num_edges, np.nan)
+    angles[3] = 0.25
+    f = rigidfold.CreasePattern(p.vertices, p.edges, p.assignments, fold_angles=angles)
+    assert f.fold_angles[3] == 0.25 and np.isnan(f.fold_angles[0])
+
+
+def test_pattern_from_bad_arrays_names_the_place():
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    edges = np.array([[0, 1], [1, 2], [2, 3], [3, 0]])
+    with pytest.raises(rigidfold.InputError, match=r"^mine: assignments\[2\]"):
+        rigidfold.CreasePattern(square, edges, ["B", "B", "X", "B"], source="mine")
+    with pytest.raises(rigidfold.InputError, match="^arrays: "):
+        rigidfold.CreasePattern(square, np.array([[0, 1], [1, 2], [2, 7], [3, 0]]))
+    with pytest.raises(rigidfold.InputError, match="vertices"):
+        rigidfold.CreasePattern(np.zeros((4, 4)), edges)

@@ -50,3 +50,25 @@ def test_trace_bad_drive_raises_input_error():
     with pytest.raises(rigidfold.InputError) as info:
         rigidfold.trace(pattern, drive=pattern.num_edges + 5)
     assert info.value.place == "drive"
+
+
+@pytest.mark.parametrize("name", ["miura_4x4_alpha60.fold", "square_twist_30_type2m.fold"])
+def test_trace_equals_the_cli_csv_bit_for_bit(tmp_path, name):
+    import csv
+    import subprocess
+
+    from conftest import bundled, cli_path
+
+    path = bundled(name)
+    out = tmp_path / "angles.csv"
+    subprocess.run([cli_path(), "trace", path, "--steps", "12", "--csv", str(out)], check=True, capture_output=True)
+    rows = list(csv.DictReader(open(out)))
+    pattern = rigidfold.load(path)
+    (branch,) = rigidfold.trace(pattern, steps=12)["branches"]
+    assert len(rows) == len(branch["drive"]) == 12
+    for s, row in enumerate(rows):
+        assert float(row["drive_deg"]) == np.degrees(branch["drive"][s])
+        assert float(row["max_residual_rad"]) == branch["residual"][s]
+        got = np.degrees(branch["fold_angles"][s])
+        want = np.array([float(row[f"e{e}_deg"]) for e in range(pattern.num_edges)])
+        assert np.array_equal(got, want)
