@@ -12,7 +12,7 @@ Patterns:   load, parse_fold, save, CreasePattern (.vertices, .edges, .assignmen
 Analysis:   check, trace, enumerate_assignments
 Vertex:     flat_fold_angles, flat_fold_multipliers, miura_vertex
 Closure:    ClosureSystem, closure_jacobian
-Design:     waterbomb_bistability
+Design:     waterbomb_bistability, string_pattern, string_forward, design_string_from_curve
 Errors:     InputError (a ValueError; the message names the file and the place in it, e.place
             the place alone), NoAnswerError (a RuntimeError; e.residual)
 Figures:    rigidfold.plot (matplotlib)
@@ -26,6 +26,7 @@ from rigidfold._core import (
     bundled_examples,
     check,
     corrugated_unit,
+    design_string_from_curve,
     enumerate_assignments,
     flat_fold_angles,
     flat_fold_multipliers,
@@ -36,6 +37,8 @@ from rigidfold._core import (
     parse_fold,
     save,
     square_twist,
+    string_forward,
+    string_pattern,
     trace,
     waterbomb_base,
     waterbomb_bistability,
@@ -65,6 +68,7 @@ __all__ = [
     "check",
     "closure_jacobian",
     "corrugated_unit",
+    "design_string_from_curve",
     "enumerate_assignments",
     "flat_fold_angles",
     "flat_fold_multipliers",
@@ -75,6 +79,8 @@ __all__ = [
     "parse_fold",
     "save",
     "square_twist",
+    "string_forward",
+    "string_pattern",
     "trace",
     "waterbomb_base",
     "waterbomb_bistability",

@@ -43,3 +43,24 @@ def test_waterbomb_bistability_matches_cli(cli):
     with pytest.raises(rigidfold.InputError) as info:
         rigidfold.waterbomb_bistability(2, 0.5)
     assert info.value.place == "n"
+
+
+def test_string_design_recovers_a_known_string():
+    import numpy as np
+
+    alpha1 = [math.radians(40 + 3 * k) for k in range(6)]
+    alpha2 = [math.radians(55 - 2 * k) for k in range(6)]
+    lengths = [1.0] * 7
+    theta0 = math.radians(30)
+    folded = rigidfold.string_forward(alpha1, alpha2, lengths, theta0)
+    assert folded["spine"].shape == (8, 3)
+    assert folded["shared_crease_mismatch"] <= 1e-12
+    pattern = rigidfold.string_pattern(alpha1, alpha2, lengths)
+    assert len(folded["edge_fold_angles"]) == pattern.num_edges
+    design = rigidfold.design_string_from_curve(folded["spine"], theta0=theta0)
+    assert design["feasible"]
+    error = max(np.max(np.abs(np.subtract(design["alpha1"], alpha1))),
+                np.max(np.abs(np.subtract(design["alpha2"], alpha2))))
+    assert error <= 1e-9
+    with pytest.raises(ValueError):
+        rigidfold.string_forward(alpha1, alpha2, lengths[:-1], theta0)
