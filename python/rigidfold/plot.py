@@ -4,6 +4,7 @@ crease_pattern(pattern)          the crease pattern in Origami Simulator's colou
                                  (M red, V blue, B black, F yellow, U magenta, C green, J grey)
 fold_angle_curves(branch)        every crease's fold angle (degrees) against the driving crease's
 folded_state(branch, pattern)    the faces placed at one step of a traced branch (3D)
+branch_diagram(check, traced, x, y)  every branch and bifurcation, crease y against crease x
 
 Each takes an optional matplotlib Axes and returns the Axes it drew on. Inputs are the objects
 rigidfold returns (CreasePattern; a branch dict of rigidfold.trace(...)["branches"]).
@@ -98,4 +99,37 @@ def folded_state(branch, pattern, step=-1, ax=None, title=None):
     ax.set_zlim(centre[2] - half, centre[2] + half)
     drive = np.degrees(branch["drive"][step])
     ax.set_title(title or f"step {step % len(branch['drive']) + 1}: driving crease at {drive:.1f} deg")
+    return ax
+
+
+def branch_diagram(check_result, traced, x_edge, y_edge, ax=None, title=None):
+    """Branch diagram (seed 001 Figs. 8 and 10): crease y_edge's fold angle against crease x_edge's
+    (degrees), one curve per traced branch, and the points where branches meet.
+
+    check_result: rigidfold.check(pattern); traced: rigidfold.trace(pattern, all_branches=True).
+    Branches that keep every M/V letter (check_result's "signs_match_assignment") are drawn in
+    colour, the others in grey; located bifurcations are red circles, the flat state a black dot.
+    """
+    ax = _axes(ax)
+    keeps = {b["id"]: b.get("signs_match_assignment", False) for b in check_result.get("branches", [])}
+    for branch in traced["branches"]:
+        rho = np.degrees(np.asarray(branch["fold_angles"]))
+        if rho.shape[0] == 0:
+            continue
+        if keeps.get(branch["id"]):
+            ax.plot(rho[:, x_edge], rho[:, y_edge], linewidth=1.4, label=f"branch {branch['id']}")
+        else:
+            ax.plot(rho[:, x_edge], rho[:, y_edge], color="0.7", linewidth=0.8)
+    for point in check_result.get("bifurcations", []):
+        angles = point["angles_deg"]
+        if point["kind"] == "bifurcation":
+            ax.plot(angles[x_edge], angles[y_edge], "o", color="#d62728", markersize=7, fillstyle="none", mew=1.8)
+        elif point["kind"] == "flat":
+            ax.plot(angles[x_edge], angles[y_edge], "o", color="black", markersize=4)
+    ax.set_xlabel(f"crease {x_edge} fold angle (deg)")
+    ax.set_ylabel(f"crease {y_edge} fold angle (deg)")
+    if any(keeps.values()):
+        ax.legend(fontsize="small")
+    ax.set_title(title or f"{len(traced['branches'])} branches, "
+                 f"{sum(p['kind'] == 'bifurcation' for p in check_result.get('bifurcations', []))} bifurcations")
     return ax

@@ -43,3 +43,27 @@ def test_plot_functions_return_axes(tmp_path):
     assert len(ax.collections[0].get_segments()) == p.num_edges
     colours = ax.collections[0].get_colors()
     assert len({tuple(c) for c in colours}) == 3  # M, V, B
+
+
+def test_branch_diagram_of_type2m(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import rigidfold
+    import rigidfold.plot
+    from conftest import bundled
+
+    p = rigidfold.load(bundled("square_twist_30_type2m.fold"))
+    checked = rigidfold.check(p)
+    traced = rigidfold.trace(p, all_branches=True)
+    assert len(traced["branches"]) == len(checked["branches"]) > 0
+    assert [b["id"] for b in traced["branches"]] == [b["id"] for b in checked["branches"]]
+    ax = rigidfold.plot.branch_diagram(checked, traced, x_edge=0, y_edge=12)
+    bifurcations = sum(pt["kind"] == "bifurcation" for pt in checked["bifurcations"])
+    assert bifurcations == 2
+    red = [ln for ln in ax.lines if ln.get_marker() == "o" and ln.get_color() == "#d62728"]
+    assert len(red) == bifurcations
+    drawn = [ln for ln in ax.lines if ln.get_marker() in ("None", "", None)]
+    assert len(drawn) == sum(b["fold_angles"].shape[0] > 0 for b in traced["branches"])
+    ax.figure.savefig(tmp_path / "diagram.png")
+    assert (tmp_path / "diagram.png").stat().st_size > 10000
