@@ -1,5 +1,5 @@
 // rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
-//                    [--curve FILE.csv [--samples K]]
+//                    [--curve FILE.csv [--samples K]] [--target-switching-force F]
 // Bistability of the symmetric waterbomb base (seed 004): every equilibrium of the spring
 // energy along the 1-DOF symmetric path, each checked (loop closure, dV/dtheta = 0, and
 // stationarity and stability on the unrestricted 2n-crease problem) before it is printed.
@@ -16,6 +16,7 @@
 #include "app/summary_stream.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
 #include "design/waterbomb/waterbomb_curve.hpp"
+#include "design/waterbomb/waterbomb_switching.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/math/number_text.hpp"
 #include "kernel/pattern/input_error.hpp"
@@ -50,6 +51,7 @@ void add_waterbomb_command(CLI::App& app) {
     bool json = false;
     std::string curve;
     int samples = 181;
+    double target_switching_force = 0;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180")->required();
@@ -66,7 +68,9 @@ void add_waterbomb_command(CLI::App& app) {
   cmd->add_option("--curve", a->curve,
                   "write energy and force-deflection along the symmetric path (CSV; each sample checked on the general model)");
   auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve over (0, theta_limit), 3..2001 (default 181)");
-  cmd->callback([a, ratio, samples] {
+  auto* target = cmd->add_option("--target-switching-force", a->target_switching_force,
+                                  "design: the mountain stiffness k_m (k_v as given, default 1) whose switching force is this (> 0; radius-1 base)");
+  cmd->callback([a, ratio, samples, target] {
     if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
     const double limit_deg = 180.0 - 180.0 / a->n;
     if (!std::isfinite(a->theta0_deg) || a->theta0_deg < 0.0 || a->theta0_deg > limit_deg)
@@ -130,6 +134,20 @@ void add_waterbomb_command(CLI::App& app) {
       for (const auto& e : r.stable_states())
         barriers.push_back({{"from_theta_deg", to_degrees(e.path.theta)}, {"symmetric_path_barrier", cusp_energy - e.path.energy}});
     j["barriers"] = barriers;
+    // Switching force under force control (rest before flat only), on the radius-1 base.
+    const double valley_length = std::cos(kPi / a->n);
+    if (theta0 < kPi / 2) {
+      const auto sw = waterbomb::switching_force(waterbomb::springs_at_rest_theta(a->n, theta0, k_m, k_v), theta0, valley_length);
+      j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat}, {"valley_crease_length", valley_length}};
+    }
+    if (target->count() > 0) {
+      if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
+        throw InputError("--target-switching-force", "must be a finite number > 0");
+      if (!(theta0 < kPi / 2)) throw InputError("--target-switching-force", "needs a rest state before flat (--theta0-deg < 90)");
+      if (!(k_v > 0.0)) throw InputError("--k-v", "must be > 0 for --target-switching-force");
+      const double k_m_design = waterbomb::mountain_stiffness_for_switching_force(a->n, theta0, k_v, a->target_switching_force, valley_length);
+      j["design"] = {{"target_switching_force", a->target_switching_force}, {"k_m", k_m_design}, {"k_v", k_v}};
+    }
     if (!a->curve.empty()) {
       const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
       for (const auto& s : c.samples)
@@ -168,6 +186,17 @@ void add_waterbomb_command(CLI::App& app) {
                       s["stationarity_residual"].get<double>(), s["min_reduced_hessian_eigenvalue"].get<double>());
         std::cout << line;
       }
+    }
+    if (j.contains("switching_force")) {
+      std::snprintf(line, sizeof line, "  switching force %.12g at theta = %.12g deg%s (push from the rest state; radius-1 base)\n",
+                    j["switching_force"]["force"].get<double>(), j["switching_force"]["theta_deg"].get<double>(),
+                    j["switching_force"]["at_flat"].get<bool>() ? " (the flat corner)" : "");
+      std::cout << line;
+    }
+    if (j.contains("design")) {
+      std::snprintf(line, sizeof line, "  design: k_m = %.12g (with k_v = %.12g) switches at %.12g\n", j["design"]["k_m"].get<double>(),
+                    k_v, a->target_switching_force);
+      std::cout << line;
     }
     for (const auto& b : barriers) {
       std::snprintf(line, sizeof line, "  barrier over the flat state from theta = %.12g deg: %.12g (symmetric path)\n",

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -110,6 +111,24 @@ TEST(WaterbombCli, CurveWritesTheCheckedSamples) {
   }
   EXPECT_FALSE(fs::exists(dir / "bad.csv"));
   fs::remove_all(dir);
+}
+
+// --target-switching-force: the designed k_m, fed back with --k-m, switches at the target.
+TEST(WaterbombCli, DesignedStiffnessSwitchesAtTheTarget) {
+  const auto d = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --target-switching-force 20 --json");
+  ASSERT_EQ(d.status, 0) << d.err;
+  const double k_m = nlohmann::json::parse(d.out)["design"]["k_m"].get<double>();
+  char flags[96];
+  std::snprintf(flags, sizeof flags, " --k-m %.17g --k-v 1 --json", k_m);
+  const auto f = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60" + flags);
+  ASSERT_EQ(f.status, 0) << f.err;
+  EXPECT_NEAR(nlohmann::json::parse(f.out)["switching_force"]["force"].get<double>(), 20.0, 1e-9);
+  for (const std::string& bad : {std::string("--theta0-deg 60 --target-switching-force -1"),
+                                 std::string("--theta0-deg 100 --target-switching-force 5")}) {
+    const auto r = test::run_command(test::cli() + " waterbomb --n 4 " + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("--target-switching-force"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace
