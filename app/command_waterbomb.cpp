@@ -137,8 +137,9 @@ void add_waterbomb_command(CLI::App& app) {
     // Switching force under force control (rest before flat only), on the radius-1 base.
     const double valley_length = std::cos(kPi / a->n);
     if (theta0 < kPi / 2) {
-      const auto sw = waterbomb::switching_force(waterbomb::springs_at_rest_theta(a->n, theta0, k_m, k_v), theta0, valley_length);
-      j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat}, {"valley_crease_length", valley_length}};
+      const auto sw = waterbomb::switching_force_checked(a->n, theta0, k_m, k_v);
+      j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat},
+                              {"valley_crease_length", valley_length}, {"general_model_gap", sw.general_gap}};
     }
     if (target->count() > 0) {
       if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
@@ -146,6 +147,7 @@ void add_waterbomb_command(CLI::App& app) {
       if (!(theta0 < kPi / 2)) throw InputError("--target-switching-force", "needs a rest state before flat (--theta0-deg < 90)");
       if (!(k_v > 0.0)) throw InputError("--k-v", "must be > 0 for --target-switching-force");
       const double k_m_design = waterbomb::mountain_stiffness_for_switching_force(a->n, theta0, k_v, a->target_switching_force, valley_length);
+      (void)waterbomb::switching_force_checked(a->n, theta0, k_m_design, k_v);  // the design, confirmed on the general model
       j["design"] = {{"target_switching_force", a->target_switching_force}, {"k_m", k_m_design}, {"k_v", k_v}};
     }
     if (!a->curve.empty()) {

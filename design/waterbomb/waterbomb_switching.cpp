@@ -2,11 +2,13 @@
 
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
 #include "design/waterbomb/waterbomb_force.hpp"
+#include "design/waterbomb/waterbomb_loaded_path.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/math/number_text.hpp"
 #include "kernel/pattern/input_error.hpp"
@@ -38,6 +40,22 @@ SwitchingForce switching_force(const WaterbombSprings& springs, double theta0, d
     if (-neg > best.force) best = {-neg, th, false};
   }
   return best;
+}
+
+SwitchingForce switching_force_checked(int n, double theta0, double k_m, double k_v) {
+  const WaterbombSprings springs = springs_at_rest_theta(n, theta0, k_m, k_v);
+  const double r = std::cos(kPi / n);
+  SwitchingForce sw = switching_force(springs, theta0, r);
+  const double at = sw.at_flat ? kPi / 2 - 1e-4 : sw.theta;
+  const LoadedPoint q = waterbomb_loaded_path(n, theta0, k_m, k_v, {at}).points.at(0);
+  sw.general_force = q.force;
+  sw.general_gap = std::fabs(q.force - q.force_closed_form);
+  if (!q.converged || !(sw.general_gap <= 1e-9 * std::max(1.0, std::fabs(q.force_closed_form))))
+    throw NoAnswerError("the general model does not confirm the switching force (reaction force " + round_trip_text(q.force) +
+                            " against " + round_trip_text(q.force_closed_form) + " at theta = " +
+                            round_trip_text(to_degrees(at)) + " deg)",
+                        sw.general_gap);
+  return sw;
 }
 
 double mountain_stiffness_for_switching_force(int n, double theta0, double k_v, double target, double r) {

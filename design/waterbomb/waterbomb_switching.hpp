@@ -21,11 +21,22 @@ struct SwitchingForce {
   double force = 0.0;   // the largest push on [theta0, pi/2]
   double theta = 0.0;   // where it is reached (radians)
   bool at_flat = false; // at the flat corner (the one-sided F(pi/2-))
+  // switching_force_checked only: the general model's reaction force where the maximum is
+  // (1e-4 rad before the flat corner when it is there; the corner itself is singular), and its
+  // gap to the closed form at that same theta.
+  double general_force = 0.0;
+  double general_gap = 0.0;
 };
 
 // Inputs: springs whose rest state lies before flat (theta0 in [0, pi/2)), theta0 (radians),
 // r > 0. Throws InputError ("theta0", "r") otherwise.
 SwitchingForce switching_force(const WaterbombSprings& springs, double theta0, double r);
+
+// switching_force on the generated radius-1 base (r = cos(pi / n)), checked on the general
+// 2n-crease model (waterbomb_loaded_path.hpp): throws NoAnswerError when the loaded
+// equilibrium does not converge there or its reaction force differs from the closed form by
+// more than 1e-9 relative. Inputs as springs_at_rest_theta, theta0 < pi/2.
+SwitchingForce switching_force_checked(int n, double theta0, double k_m, double k_v);
 
 // The mountain stiffness k_m (valley stiffness k_v fixed) whose switching force is `target`
 // (> 0). Throws InputError for bad input and NoAnswerError when even k_m = 0 switches above

@@ -51,6 +51,10 @@ TEST(WaterbombSwitching, StiffnessForATargetForceIsCheckedForwardAndOnTheGeneral
   ASSERT_TRUE(loaded.points[0].converged);
   EXPECT_NEAR(loaded.points[0].force, loaded.points[0].force_closed_form, 1e-9 * target);
   EXPECT_NEAR(loaded.points[0].force, target, 1e-2 * target);  // 1e-4 rad before the corner
+  const auto checked = waterbomb::switching_force_checked(n, theta0, k_m, 1.0);
+  EXPECT_NEAR(checked.force, target, 1e-10 * target);
+  EXPECT_LE(checked.general_gap, 1e-9 * target);
+  EXPECT_NEAR(checked.general_force, target, 1e-2 * target);  // 1e-4 rad before the corner
 }
 
 TEST(WaterbombSwitching, RefusesWhatNoStiffnessCanDo) {
