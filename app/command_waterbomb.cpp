@@ -26,16 +26,6 @@
 namespace rigidfold::cli {
 namespace {
 
-const char* kind_name(waterbomb::EquilibriumKind k) {
-  switch (k) {
-    case waterbomb::EquilibriumKind::kMinimum: return "minimum";
-    case waterbomb::EquilibriumKind::kMaximum: return "maximum";
-    case waterbomb::EquilibriumKind::kCuspMaximum: return "cusp maximum (flat state)";
-    case waterbomb::EquilibriumKind::kCuspMinimum: return "cusp minimum (flat state)";
-  }
-  return "?";
-}
-
 // JSON number or null (NaN has no JSON form: the flat cusp has no reduced Hessian).
 nlohmann::ordered_json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
@@ -106,7 +96,7 @@ void add_waterbomb_command(CLI::App& app) {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const auto& e : r.equilibria) {
       nlohmann::ordered_json s;
-      s["kind"] = kind_name(e.path.kind);
+      s["kind"] = waterbomb::to_string(e.path.kind);
       s["theta_deg"] = to_degrees(e.path.theta);
       s["gamma_m_deg"] = to_degrees(e.path.angles.gamma_m);
       s["gamma_v_deg"] = to_degrees(e.path.angles.gamma_v);
@@ -126,13 +116,9 @@ void add_waterbomb_command(CLI::App& app) {
     j["equilibria"] = list;
     // Barriers along the symmetric path only: over the flat cusp from each stable state. An
     // unsymmetric path between the states may cross lower (not searched yet).
-    double cusp_energy = NAN;
-    for (const auto& e : r.equilibria)
-      if (e.path.kind == waterbomb::EquilibriumKind::kCuspMaximum) cusp_energy = e.path.energy;
     nlohmann::ordered_json barriers = nlohmann::ordered_json::array();
-    if (std::isfinite(cusp_energy))
-      for (const auto& e : r.stable_states())
-        barriers.push_back({{"from_theta_deg", to_degrees(e.path.theta)}, {"symmetric_path_barrier", cusp_energy - e.path.energy}});
+    for (const auto& b : r.symmetric_path_barriers())
+      barriers.push_back({{"from_theta_deg", to_degrees(b.from_theta)}, {"symmetric_path_barrier", b.height}});
     j["barriers"] = barriers;
     // Switching force under force control (rest before flat only), on the radius-1 base.
     const double valley_length = std::cos(kPi / a->n);

@@ -26,6 +26,7 @@
 #include "data/generators/waterbomb.hpp"
 #include "data/generators/waterbomb_tessellation.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "design/waterbomb/waterbomb_kinematics.hpp"
 #include "design/waterbomb/waterbomb_curve.hpp"
 #include "kernel/analysis/assignment_enumeration.hpp"
 #include "kernel/closure/closure_system.hpp"
@@ -61,15 +62,6 @@ void BM_WaterbombCurve(benchmark::State& state) {
   state.counters["unchecked"] = c.unchecked;
 }
 
-Eigen::VectorXd per_edge(const CreasePattern& p, waterbomb::FoldPair g) {
-  Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.assignments[e] == Assignment::Mountain) rho[e] = g.gamma_m;
-    if (p.assignments[e] == Assignment::Valley) rho[e] = g.gamma_v;
-  }
-  return rho;
-}
-
 void BM_StableStateSearch(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   generators::WaterbombParams wp;
@@ -78,7 +70,7 @@ void BM_StableStateSearch(benchmark::State& state) {
   const Topology t = build_topology(p);
   const ClosureSystem sys(p, t);
   const double theta0 = to_radians(45.0);
-  const Eigen::VectorXd rest = per_edge(p, waterbomb::waterbomb_fold_angles(n, theta0));
+  const Eigen::VectorXd rest = waterbomb::waterbomb_edge_angles(p, waterbomb::waterbomb_fold_angles(n, theta0));
   const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {2.0, 1.0, 1.0}), rest);
   StableStateSearch s;
   for (auto _ : state) s = search_stable_states(p, t, sys, springs, rest);
@@ -89,7 +81,7 @@ void BM_StableStateSearch(benchmark::State& state) {
     if (f.physical()) ++physical;
   for (const auto& c : closed) {
     double best = 1e300;
-    for (const auto& f : s.states) best = std::min(best, (f.state.edge_angles - per_edge(p, c.path.angles)).lpNorm<Eigen::Infinity>());
+    for (const auto& f : s.states) best = std::min(best, (f.state.edge_angles - waterbomb::waterbomb_edge_angles(p, c.path.angles)).lpNorm<Eigen::Infinity>());
     gap = std::max(gap, best);
   }
   state.counters["states_keeping_letters"] = physical;

@@ -16,6 +16,14 @@
 
 namespace rigidfold::waterbomb {
 
+std::vector<WaterbombBistability::Barrier> WaterbombBistability::symmetric_path_barriers() const {
+  std::vector<Barrier> out;
+  for (const CheckedEquilibrium& cusp : equilibria)
+    if (cusp.path.kind == EquilibriumKind::kCuspMaximum)
+      for (const CheckedEquilibrium& s : stable_states()) out.push_back({s.path.theta, cusp.path.energy - s.path.energy});
+  return out;
+}
+
 std::vector<CheckedEquilibrium> WaterbombBistability::stable_states() const {
   std::vector<CheckedEquilibrium> out;
   for (const CheckedEquilibrium& e : equilibria)

@@ -30,6 +30,14 @@ struct WaterbombBistability {
   std::vector<CheckedEquilibrium> equilibria;  // increasing theta
   // Path minima that are also unrestricted minima, not on a contact limit.
   std::vector<CheckedEquilibrium> stable_states() const;
+  // From each stable state, the energy to climb to the flat cusp maximum along the symmetric
+  // path (empty when the flat state is no cusp maximum). An unsymmetric path between the
+  // states may cross lower: not searched here.
+  struct Barrier {
+    double from_theta = 0.0;  // the stable state's theta (radians)
+    double height = 0.0;      // cusp energy - its energy
+  };
+  std::vector<Barrier> symmetric_path_barriers() const;
 };
 
 // Inputs: n >= 3, theta0 (radians, in [0, theta_limit(n)]), k_m, k_v >= 0 (not both 0;

@@ -8,6 +8,16 @@
 
 namespace rigidfold::waterbomb {
 
+const char* to_string(EquilibriumKind kind) {
+  switch (kind) {
+    case EquilibriumKind::kMinimum: return "minimum";
+    case EquilibriumKind::kMaximum: return "maximum";
+    case EquilibriumKind::kCuspMaximum: return "cusp maximum (flat state)";
+    case EquilibriumKind::kCuspMinimum: return "cusp minimum (flat state)";
+  }
+  return "?";
+}
+
 WaterbombSprings springs_at_rest_theta(int n, double theta0, double k_m, double k_v) {
   const double limit = theta_limit(n);  // checks n
   if (!std::isfinite(theta0) || theta0 < 0.0 || theta0 > limit)

@@ -30,6 +30,8 @@ double waterbomb_energy(const WaterbombSprings& s, double theta);
 double waterbomb_energy_slope(const WaterbombSprings& s, double theta, int side = 0);
 
 enum class EquilibriumKind { kMinimum, kMaximum, kCuspMaximum, kCuspMinimum };
+// "minimum", "maximum", "cusp maximum (flat state)", "cusp minimum (flat state)".
+const char* to_string(EquilibriumKind kind);
 
 struct PathEquilibrium {
   EquilibriumKind kind = EquilibriumKind::kMinimum;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/assignment.hpp"
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::waterbomb {
@@ -102,6 +103,15 @@ double theta_on_path(int n, double gamma_m, double gamma_v, double* gamma_v_gap)
   }
   if (gamma_v_gap) *gamma_v_gap = gap;
   return best;
+}
+
+Eigen::VectorXd waterbomb_edge_angles(const CreasePattern& base, FoldPair angles) {
+  Eigen::VectorXd rho = Eigen::VectorXd::Zero(base.num_edges());
+  for (int e = 0; e < base.num_edges(); ++e) {
+    if (base.assignments[e] == Assignment::Mountain) rho[e] = angles.gamma_m;
+    if (base.assignments[e] == Assignment::Valley) rho[e] = angles.gamma_v;
+  }
+  return rho;
 }
 
 }  // namespace rigidfold::waterbomb

@@ -21,7 +21,10 @@
 //                                     omega = atan2(|cos theta|, cos a sin theta)
 // where psi = acos[cot theta tan(d/2)] and omega = acos[cot a tan(d/2)] of seed eq. 3.5 with
 // sin(d/2) = sin theta sin a (eq. 3.6 with beta = 2a), one formula on both sides of flat.
+#include <Eigen/Core>
 #include <string>
+
+#include "kernel/pattern/crease_pattern.hpp"
 
 namespace rigidfold::waterbomb {
 
@@ -44,6 +47,11 @@ FoldPair waterbomb_fold_angles(int n, double theta);
 // bifurcation point): side = -1 gives the limit from below, +1 from above; elsewhere side is
 // ignored. Same throws as waterbomb_fold_angles.
 FoldPair waterbomb_fold_angle_derivatives(int n, double theta, int side = 0);
+
+// A symmetric state as one fold angle per edge of a waterbomb base pattern (e.g.
+// data/generators/waterbomb.hpp): gamma_m on its M creases, gamma_v on its V creases, 0 on
+// every other edge (radians).
+Eigen::VectorXd waterbomb_edge_angles(const CreasePattern& base, FoldPair angles);
 
 // Seed 004 as printed, for cross-checks (tests): the traditional n = 4 forms (2.1)-(2.8)
 // (range a for theta <= pi/2 by eq. 2.7, range b by eq. 2.8), the general forms

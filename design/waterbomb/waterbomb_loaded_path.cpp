@@ -23,14 +23,7 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
   const CreasePattern p = generators::waterbomb_base(wp);
   const Topology topo = build_topology(p);
   const ClosureSystem sys(p, topo);
-  auto per_edge = [&](FoldPair g) {
-    Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-    for (int e = 0; e < p.num_edges(); ++e) {
-      if (p.assignments[e] == Assignment::Mountain) rho[e] = g.gamma_m;
-      if (p.assignments[e] == Assignment::Valley) rho[e] = g.gamma_v;
-    }
-    return rho;
-  };
+  auto per_edge = [&](FoldPair g) { return waterbomb_edge_angles(p, g); };
   const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {k_m, k_v, 0.0}), per_edge(ws.rest));
   VertexHeightLoad load;
   load.vertex = 0;

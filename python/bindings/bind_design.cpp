@@ -17,19 +17,9 @@ namespace rigidfold::python {
 
 namespace {
 
-const char* kind_name(waterbomb::EquilibriumKind k) {
-  switch (k) {
-    case waterbomb::EquilibriumKind::kMinimum: return "minimum";
-    case waterbomb::EquilibriumKind::kMaximum: return "maximum";
-    case waterbomb::EquilibriumKind::kCuspMaximum: return "cusp maximum (flat state)";
-    case waterbomb::EquilibriumKind::kCuspMinimum: return "cusp minimum (flat state)";
-  }
-  return "?";
-}
-
 py::dict equilibrium_dict(const waterbomb::CheckedEquilibrium& e) {
   py::dict d;
-  d["kind"] = kind_name(e.path.kind);
+  d["kind"] = waterbomb::to_string(e.path.kind);
   d["theta"] = e.path.theta;
   d["gamma_m"] = e.path.angles.gamma_m;
   d["gamma_v"] = e.path.angles.gamma_v;

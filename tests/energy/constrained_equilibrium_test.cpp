@@ -9,6 +9,7 @@
 #include <random>
 
 #include "data/generators/waterbomb.hpp"
+#include "design/waterbomb/waterbomb_kinematics.hpp"
 #include "design/waterbomb/waterbomb_energy.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/constrained_equilibrium.hpp"
@@ -33,14 +34,7 @@ struct Base {
     wp.n = n;
     return generators::waterbomb_base(wp);
   }
-  Eigen::VectorXd per_edge(waterbomb::FoldPair g) const {
-    Eigen::VectorXd rho = Eigen::VectorXd::Zero(pattern.num_edges());
-    for (int e = 0; e < pattern.num_edges(); ++e) {
-      if (pattern.assignments[e] == Assignment::Mountain) rho[e] = g.gamma_m;
-      if (pattern.assignments[e] == Assignment::Valley) rho[e] = g.gamma_v;
-    }
-    return rho;
-  }
+  Eigen::VectorXd per_edge(waterbomb::FoldPair g) const { return waterbomb::waterbomb_edge_angles(pattern, g); }
   // The closed-form state at theta plus an asymmetric random perturbation of `size` rad.
   Eigen::VectorXd perturbed_start(int n, double theta, double size, unsigned seed) const {
     std::mt19937_64 rng(seed);

@@ -10,6 +10,7 @@
 
 #include "data/generators/waterbomb.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "design/waterbomb/waterbomb_kinematics.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/crease_stiffness.hpp"
 #include "kernel/energy/stable_state_search.hpp"
@@ -19,15 +20,6 @@
 
 namespace rigidfold {
 namespace {
-
-Eigen::VectorXd per_edge(const CreasePattern& p, waterbomb::FoldPair g) {
-  Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-  for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.assignments[e] == Assignment::Mountain) rho[e] = g.gamma_m;
-    if (p.assignments[e] == Assignment::Valley) rho[e] = g.gamma_v;
-  }
-  return rho;
-}
 
 TEST(StableStateSearch, FindsTheWaterbombsTwoStatesWithoutKnowingItIsAWaterbomb) {
   for (auto [n, theta0_deg, k_m] : {std::tuple{4, 60.0, 1.0}, std::tuple{6, 45.0, 2.0}}) {
@@ -39,7 +31,7 @@ TEST(StableStateSearch, FindsTheWaterbombsTwoStatesWithoutKnowingItIsAWaterbomb)
     const auto closed = waterbomb::waterbomb_bistability(n, to_radians(theta0_deg), k_m, 1.0);
     const auto expected = closed.stable_states();
     ASSERT_EQ(expected.size(), 2u);
-    const Eigen::VectorXd rest = per_edge(p, waterbomb::waterbomb_fold_angles(n, to_radians(theta0_deg)));
+    const Eigen::VectorXd rest = waterbomb::waterbomb_edge_angles(p, waterbomb::waterbomb_fold_angles(n, to_radians(theta0_deg)));
     const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {k_m, 1.0, 1.0}), rest);
     const StableStateSearch s = search_stable_states(p, t, sys, springs, rest);
     // The springs alone also have unsymmetric minima with creases flipped against their
@@ -68,7 +60,7 @@ TEST(StableStateSearch, FindsTheWaterbombsTwoStatesWithoutKnowingItIsAWaterbomb)
     for (std::size_t i = 0; i < 2; ++i) {
       const auto& found = physical[i]->state;
       const auto& want = expected[i].path;  // both lists in increasing energy
-      EXPECT_LT((found.edge_angles - per_edge(p, want.angles)).lpNorm<Eigen::Infinity>(), 1e-9) << "n = " << n << " state " << i;
+      EXPECT_LT((found.edge_angles - waterbomb::waterbomb_edge_angles(p, want.angles)).lpNorm<Eigen::Infinity>(), 1e-9) << "n = " << n << " state " << i;
       EXPECT_NEAR(found.energy, want.energy, 1e-9 * std::max(1.0, want.energy)) << "n = " << n;
       EXPECT_LE(found.closure_residual, 1e-12);
       EXPECT_GT(found.min_eigenvalue, 0.0);

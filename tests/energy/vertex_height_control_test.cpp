@@ -7,6 +7,7 @@
 #include <random>
 
 #include "data/generators/waterbomb.hpp"
+#include "design/waterbomb/waterbomb_kinematics.hpp"
 #include "design/waterbomb/waterbomb_force.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/crease_stiffness.hpp"
@@ -27,11 +28,7 @@ TEST(EnergyHeightControl, ReactionForceEqualsVirtualWork) {
     const ClosureSystem sys(p, topo);
     const double th0 = to_radians(60.0), km = 1.5, kv = 1.0;
     const auto ws = waterbomb::springs_at_rest_theta(n, th0, km, kv);
-    auto per_edge = [&](waterbomb::FoldPair g) {
-      Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
-      for (int e = 0; e < 2 * n; ++e) rho[e] = p.assignments[e] == Assignment::Mountain ? g.gamma_m : g.gamma_v;
-      return rho;
-    };
+    auto per_edge = [&](waterbomb::FoldPair g) { return waterbomb::waterbomb_edge_angles(p, g); };
     const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {km, kv, 0.0}), per_edge(ws.rest));
     VertexHeightLoad load;
     load.vertex = 0;
