@@ -96,7 +96,7 @@ function fit() {
 }
 window.addEventListener('resize', fit);
 
-// Start from ?set=NAME&branch=ID&step=N when given (the main job's screenshot).
+// Start from ?set=NAME&branch=ID&step=N|last&crease=E when given (the main job's screenshot).
 function start() {
   const sets = data.index.sets;
   if (!sets.length) {
@@ -110,6 +110,7 @@ function start() {
   fit();
   selectSet(si, bi, 0);
   if (q.has('step')) showFrame(q.get('step') === 'last' ? state.trace.frames.length - 1 : Number(q.get('step')));
+  if (q.has('crease')) pick(Number(q.get('crease')));
   window.rigidfoldViewer = {
     ready: true,
     state,

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what the viewer needs, only what is missing: Debian's chromium
+# (headless browser of the end-to-end test and the main job's screenshot),
+# nodejs and npm when node/npm are not on PATH, then `npm ci` in viewer/
+# (three, esbuild, playwright-core at the versions in package-lock.json)
+# when node_modules does not match the lock file.
+# Idempotent and quiet: one line per action, nothing when all is present.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+
+missing=()
+if ! dpkg-query -W -f='${Status}' chromium 2>/dev/null | grep -q "install ok installed"; then
+  missing+=(chromium)
+fi
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  missing+=(nodejs npm)
+fi
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  echo "bootstrap_viewer: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq >/dev/null
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# npm ci only when node_modules is missing or older than the lock file
+# (npm writes node_modules/.package-lock.json on every install).
+stamp="$here/node_modules/.package-lock.json"
+if [ ! -f "$stamp" ] || [ "$here/package-lock.json" -nt "$stamp" ]; then
+  echo "bootstrap_viewer: npm ci in viewer/"
+  (cd "$here" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+fi
