@@ -108,7 +108,7 @@ export class FoldScene {
     overlay.setAttribute('position', panelPos);
     overlay.setIndex([]);
     this.group.add(new THREE.Mesh(overlay, new THREE.MeshBasicMaterial({
-      color: INTERFERENCE_COLOUR, side: THREE.DoubleSide, transparent: true, opacity: 0.85,
+      color: INTERFERENCE_COLOUR, side: THREE.DoubleSide, transparent: true, opacity: 0.6,
       polygonOffset: true, polygonOffsetFactor: 0.5, polygonOffsetUnits: 0.5,
     })));
     this.panelPos = panelPos;

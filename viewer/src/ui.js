@@ -41,14 +41,16 @@ export class Controls {
       set.verdict && `verdict: ${esc(set.verdict)}`,
       set.note && esc(set.note),
     ].filter(Boolean).join('<br>');
-    const pts = (set.points || []).filter((p) => p.kind !== 'flat');
+    // Only bifurcations get jumps: every branch leaves the flat state, so
+    // its list would be the branch menu again.
+    const pts = (set.points || []).filter((p) => p.kind === 'bifurcation');
     const box = $('points');
     if (!set.points) {
       box.innerHTML = '<i>no check summary given: bifurcations unknown</i>';
       return;
     }
     if (pts.length === 0) {
-      box.innerHTML = '<i>no bifurcation located</i>';
+      box.innerHTML = `<i>no bifurcation located (${set.points.length} point${set.points.length === 1 ? '' : 's'} listed by check: ${set.points.map((p) => esc(p.kind.split(':')[0])).join(', ')})</i>`;
       return;
     }
     box.innerHTML = '';
@@ -56,7 +58,7 @@ export class Controls {
       const div = document.createElement('div');
       div.className = 'point';
       const where = p.parameterCrease !== undefined ? `crease ${p.parameterCrease} at ${fmt(p.parameterDeg, 8)} deg` : '';
-      div.innerHTML = `<b>point ${p.point}</b> ${esc(p.kind)} ${where}<br>error bound ${fmt(p.boundRad, 3)} rad, kernel dim ${p.kernelDimension ?? '?'}<br>`;
+      div.innerHTML = `<b>point ${p.point}</b> ${esc(p.kind)} ${where}<br>error bound ${fmt(p.boundRad, 3)} rad, kernel dimension ${p.kernelDimension}, ${p.tangentLines} tangent lines<br>`;
       for (const j of jumpsTo(set, p.point)) {
         const btn = document.createElement('button');
         btn.textContent = j.label;
@@ -96,7 +98,13 @@ export class Controls {
     } else {
       $('drive').textContent = '';
     }
-    const ev = annotation.events.map((e) => `${e.kind} crease ${e.edge} (${fmt(e.angleDeg, 6)} deg)`);
+    // Grouped by kind: a flat-folded step can have an event on every crease.
+    const byKind = new Map();
+    for (const e of annotation.events) {
+      if (!byKind.has(e.kind)) byKind.set(e.kind, []);
+      byKind.get(e.kind).push(e.edge);
+    }
+    const ev = [...byKind].map(([kind, edges]) => `${kind.replace('_', ' ')}: crease${edges.length > 1 ? 's' : ''} ${edges.join(', ')}`);
     if (annotation.interferingFaces.length) ev.push(`interfering panels: ${annotation.interferingFaces.join(', ')}`);
     ev.push(...annotation.notes);
     $('events').innerHTML = ev.map(esc).join('<br>') || '<i>none</i>';
