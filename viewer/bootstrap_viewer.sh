@@ -31,3 +31,6 @@ if [ ! -f "$stamp" ] || [ "$here/package-lock.json" -nt "$stamp" ]; then
   echo "bootstrap_viewer: npm ci in viewer/"
   (cd "$here" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
 fi
+if [ "$(node -p 'process.versions.node.split(".")[0]')" -lt 20 ]; then
+  echo "bootstrap_viewer: warning: node $(node --version) < 20; playwright-core (the viewer test) needs node >= 20"
+fi

@@ -1,10 +1,11 @@
 // What the viewer knows about each frame of a branch beyond its geometry:
 // events at that step and the panels in facet interference. All of it comes
-// from the catalogue (trace/check summaries); a FOLD without them gives none.
+// from the catalogue (trace/check summaries), and from a frame's
+// rigidfold:interfering_faces should trace ever write it.
 
 // Per frame: { events: [...], interferingFaces: [face ids], notes: [text] }.
 export function frameAnnotations(trace, branch) {
-  const out = trace.frames.map(() => ({ events: [], interferingFaces: new Set(), notes: [] }));
+  const out = trace.frames.map((f) => ({ events: [], interferingFaces: new Set(f.interferingFaces), notes: [] }));
   for (const e of branch.events || []) {
     const a = out[e.step];
     if (!a) continue;

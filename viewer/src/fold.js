@@ -86,6 +86,8 @@ export function parseFold(fold) {
       foldAngleDeg: Array.isArray(f.edges_foldAngle) ? f.edges_foldAngle : null,
       residualRad: typeof own['rigidfold:max_residual_rad'] === 'number' ? own['rigidfold:max_residual_rad'] : null,
       mismatch: typeof own['rigidfold:closure_mismatch'] === 'number' ? own['rigidfold:closure_mismatch'] : null,
+      // Not written by trace yet (see README): faces in interference at this frame.
+      interferingFaces: Array.isArray(own['rigidfold:interfering_faces']) ? own['rigidfold:interfering_faces'].flat() : [],
     });
   }
   return {

@@ -86,6 +86,7 @@ export class FoldScene {
     }
     this.trace = trace;
     this.picked = -1;
+    this.frame = 0; // the previous trace's frame may not exist in this one
     this.group = new THREE.Group();
 
     // Panels: non-indexed triangles (3 own vertices each) so an overlay can

@@ -138,9 +138,9 @@ try {
   // Interference overlay: a branch with an interference event at its end.
   const hit = set.branches.find((b) => (b.events || []).some((ev) => ev.kind === 'interference' && ev.step === b.frames - 1));
   if (hit) {
-    await page.evaluate((id) => window.rigidfoldViewer.selectSet(window.rigidfoldViewer.state && document.getElementById('view').dataset.set,
-      window.RIGIDFOLD_DATA.index.sets.find((s) => s.name === document.getElementById('view').dataset.set).branches.findIndex((b) => b.id === id)), hit.id);
-    await page.evaluate((f) => window.rigidfoldViewer.showFrame(f), hit.frames - 1);
+    await page.locator('#branch').selectOption(String(set.branches.indexOf(hit)));
+    await slider.focus();
+    await page.keyboard.press('End');
     ds = await dataset(page);
     const shot = await snapshot(page, 'interference');
     check(Number(ds.interferingFaces) > 0 && shot.orange > 0,

@@ -17,6 +17,11 @@ if ! command -v node >/dev/null 2>&1; then
   echo "SKIP Viewer.EndToEnd: node not found on PATH; install it with bash viewer/bootstrap_viewer.sh"
   exit 77
 fi
+major="$(node -p 'process.versions.node.split(".")[0]')"
+if [ "$major" -lt 20 ]; then
+  echo "Viewer.EndToEnd: node $(node --version) is too old; playwright-core needs node >= 20" >&2
+  exit 1
+fi
 chromium=""
 for c in "${CHROMIUM:-}" /usr/bin/chromium /usr/bin/chromium-browser; do
   if [ -n "$c" ] && [ -x "$c" ]; then chromium="$c"; break; fi
