@@ -32,8 +32,10 @@ struct Polynomial {
   std::vector<double> c;
 };
 // The seed's offset bases (eq 37): B1 = (1 - t)^2 t, B2 = (1 - t) t, B3 = (1 - t) t^2.
-// The OCR prints "4(1 - t) t^2" for B3; the digest reads the 4 as an OCR artefact (it is
-// unsettled: the seed's eq 39 coefficients depend on it). b3_scale multiplies B3.
+// The OCR prints "4(1 - t) t^2" for B3; the digest reads the 4 as an OCR artefact. The
+// eq 39 coefficients settle it (tests/sorce/sorce_seed_coefficients_test.cpp): with B3 as
+// here one sign pattern makes all of vertex A's profiles convex as the seed says, with the
+// 4 none does. b3_scale multiplies B3.
 std::vector<Polynomial> seed_offset_bases(double b3_scale = 1.0);
 // Offset with endpoint-preserving bases (eq 36): f = end_value * (t + sum_j b[j] B_j(t)).
 // Every basis must vanish at t = 0 and t = 1 (|B(0)|, |B(1)| <= 1e-12), so f(0) = 0 and
