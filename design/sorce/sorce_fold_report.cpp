@@ -177,6 +177,14 @@ FoldReport fold_report(const FoldMotion& m, const ReportOptions& options) {
   r.protrusion_left = protrusion(tp, yl, m.thickness_left, [&](double t) { return point_at(m, t).s_left.y(); });
   r.protrusion_right = protrusion(tp, yr, m.thickness_right, [&](double t) { return point_at(m, t).s_right.y(); });
 
+  if (r.ends.flat_folded_end) {
+    const Jet g1 = m.gamma(1.0);
+    const double dy = m.d ? m.d(1.0)[1][0] : 0.0;
+    r.end_separation = -(m.z_left(1.0)[0] + m.z_right(1.0)[0]) + dy;
+    const double side = g1[0] > 0.0 ? 1.0 : -1.0;
+    r.stacks = side * r.end_separation >= (m.thickness_left + m.thickness_right) / 2 - 1e-12;
+  }
+
   if (defined_everywhere) {
     using boost::math::quadrature::gauss_kronrod;
     auto len = [&](bool left) {

@@ -53,6 +53,12 @@ struct FoldReport {
   // motion's thickness is > 0). A positive value means the mate needs a clearance hole.
   double protrusion_left = 0.0, protrusion_right = 0.0;
   double max_rolling_residual = 0.0, max_contact_residual = 0.0;  // over the samples
+  // Stacking at t = 1 (only when gamma(1) = +-pi): the right panel's mid-plane height in the
+  // left panel's own coordinates, -(z_l(1) + z_r(1)) + d_y(1) (digest section 1, sign law).
+  // `stacks`: on the fold's side (> 0 valley, < 0 mountain) and at least (h_l + h_r)/2 away
+  // (within 1e-12), so the two slabs lie flat on each other or with layers between.
+  double end_separation = 0.0;
+  bool stacks = false;
 };
 
 // Throws InputError("samples") if samples < 3; passes on profile/end-point errors.

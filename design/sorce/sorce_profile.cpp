@@ -38,6 +38,12 @@ std::string number(double x) { return std::to_string(x); }
 
 }  // namespace
 
+// eqs 56/57 from eq 54 (i = left: theta_l = 0, r_l = (0, z_l); j = right: theta_r = gamma,
+// r_r = d + R(gamma)(0, z_r)): with q = r_r - r_l, s_l = q + J q' / gamma' and
+// s_r = R(-gamma) J q' / gamma', where q' = d' + gamma' J R(gamma)(0, z_r) + R(gamma)(0, z_r')
+// - (0, z_l'); expanding gives the forms in the header (the digest's restored signs). The
+// tests compare both with planar_centrodes on the same poses, and eq 54 itself with finite
+// differences of the contact and rolling conditions on random motions.
 ProfilePoint profile_point(const FoldMotion& m, double t) {
   using detail::derivative_series;
   using detail::series;

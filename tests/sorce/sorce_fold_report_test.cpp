@@ -132,6 +132,34 @@ TEST(SorceFoldReport, CircularConstructionGivesCircles) {
   EXPECT_NEAR(figure_of_merit(circles, 0.0), 1.0, 1e-9);
 }
 
+// Stacking at t = 1: vertex A's panels end -(z_l(1) + z_r(1)) apart (3, 1, -1, 1 thicknesses
+// from eq 27), on the valley side for folds 1, 2, 4 and the mountain side for fold 3; the
+// bird's-foot vertex stacks with the digest's z_i = -0.1 t and not with the OCR's +0.1 t
+// (the sign law behind the digest's correction of eqs 60, 61).
+TEST(SorceFoldReport, PanelsStackAtTheEnd) {
+  const SorceVertex a = vertex_a_linear(1.0);
+  for (int j = 0; j < 4; ++j) {
+    const FoldReport r = fold_report(a.folds[j], {101});
+    EXPECT_NEAR(r.end_separation, -(a.folds[j].z_left(1.0)[0] + a.folds[j].z_right(1.0)[0]), 1e-15);
+    EXPECT_TRUE(r.stacks) << "fold " << j + 1;
+  }
+  EXPECT_LT(fold_report(a.folds[2], {101}).end_separation, 0.0);  // mountain
+  for (int power : {1, 2}) {
+    const SorceVertex b = vertex_b_split(power);
+    for (int j = 0; j < 4; ++j) EXPECT_TRUE(fold_report(b.folds[j], {101}).stacks) << "fold " << j + 1;
+  }
+  const VertexSectors bs = vertex_b_sectors();
+  const auto gamma = vertex_fold_angles(bs, VertexParameterization::kSymmetric);
+  const ScalarFunction up = power_function(0.1, 1);
+  const SorceVertex ocr = sorce_vertex(bs, gamma, {up, up, up, up}, {0.2, 0.2, 0.2, 0.2}, collinear_split(bs, gamma, power_function(0.4, 2)));
+  int stacking = 0;
+  for (int j = 0; j < 4; ++j) stacking += fold_report(ocr.folds[j], {101}).stacks;
+  EXPECT_LT(stacking, 4);
+  // The circular construction stacks as well.
+  const SorceVertex c = circular_split_vertex(bs, VertexParameterization::kSymmetric, 0.1);
+  for (int j = 0; j < 4; ++j) EXPECT_TRUE(fold_report(c.folds[j], {101}).stacks) << "fold " << j + 1;
+}
+
 TEST(SorceFoldReport, IllBehavedAndStationaryPoints) {
   // gamma = 2 t (1 - t): gamma' = 0 at t = 1/2.
   const ScalarFunction gamma = [](double t) { return Jet{2 * t * (1 - t), 2 - 4 * t, -4, 0}; };
