@@ -172,8 +172,10 @@ Json foldability_json(const FoldabilityReport& r) {
   j["obstruction"] = r.obstruction ? obstruction_json(*r.obstruction) : Json(nullptr);
   if (r.input_precision) {
     const auto& ip = *r.input_precision;
-    if (ip.witness_kind == "coordinates")
-      j["input_precision"] = {{"witness", "flat-foldable pattern within the rounding of the coordinates"},
+    if (ip.witness_kind == "coordinates" || ip.witness_kind == "drawn points")
+      j["input_precision"] = {{"witness", ip.witness_kind == "coordinates"
+                                              ? "flat-foldable pattern within the rounding of the coordinates"
+                                              : "flat-foldable pattern, each vertex within the box of the points drawn for it grown by their rounding"},
                               {"decimal_places", ip.decimal_places},
                               {"significant_digits", ip.significant_digits},
                               {"coordinate_rounding", ip.coordinate_rounding},

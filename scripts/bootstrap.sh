@@ -11,6 +11,9 @@ packages=(
   libboost-dev libfcl-dev libspectra-dev libexpat1-dev clang libclang-rt-14-dev
 )
 
+# The browser viewer's needs (Debian chromium, node/npm, npm ci in viewer/): its own script.
+bash "$(dirname "$0")/../viewer/bootstrap_viewer.sh"
+
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -59,4 +59,7 @@ for name in corrugated_p_rigid corrugated_q_rigid square_twist_30_type1; do
   /usr/bin/python3 python/plot_assignments.py "data/bundled/$name.fold" "out/report/assignments/$name.json" \
     --out "out/report/figures/${name}_assignments.png" >/dev/null
 done
+# The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
+# playable from out/report/viewer/index.html, and a screenshot of it (type2m.png).
+bash viewer/main_job.sh out/report
 echo "report: out/report/REPORT.md"

@@ -6,7 +6,7 @@
 // cannot decide. The file is nonetheless consistent with a flat-foldable design.
 //
 // The witness: the file's vertices moved, each coordinate c by at most its rounding u(c)
-// (coordinate_precision.hpp), so that every interior vertex meets Kawasaki exactly
+// (coordinate_precision.hpp, or the reader's bounds: see below), so that every interior vertex meets Kawasaki exactly
 // (alternate sectors sum to pi; sector sums stay 2 pi in the plane). Gauss-Newton on the
 // Kawasaki defects g_v(x) = theta_2 - theta_1 + theta_4 - theta_3 - pi (theta_i: directions of
 // the vertex's creases in counter-clockwise order) with steps of least u-weighted norm,
@@ -28,15 +28,19 @@
 // Limit: the witness aims at Kawasaki only, not at the loop gains of the multiplier model, so
 // a pattern with cycles of vertices (a Miura larger than a strip) gets a witness whose gains
 // miss 1 by about the rounding: check_foldability then says "undecided", never "no". And an
-// SVG whose vertices were made by the reader where lines cross carries computed coordinates
-// (-606.6436666666667), which coordinate_precision does not read as rounded: no witness.
-// Next: loop-gain rows in the same least-move solve, and bounds from the SVG's own numbers.
+// SVG's vertices are computed by the reader (the mean of near-coincident drawn ends, or where
+// lines cross), so their digits say nothing: there the reader's own bounds are used
+// (CreasePattern::position_bounds), from the digits of the SVG's numbers. Each coordinate may
+// then move by a different amount down and up (the box need not be centred on the vertex).
+// Loop gains: the least move aims at Kawasaki only unless gain_modes are given (below): a
+// rounded Miura's Kawasaki-only witness misses gain 1 by about the rounding.
 // Units: radians; lengths in the pattern's unit.
 #include <optional>
 
 #include "kernel/pattern/coordinate_precision.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/vertex/flat_foldable_multipliers.hpp"
 
 namespace rigidfold {
 
@@ -50,11 +54,25 @@ struct FlatFoldableWitness {
   double witness_kawasaki = 0.0;      // largest defect of the witness, from its own topology
   int iterations = 0;
   bool explained = false;             // every move within its rounding, witness flat-foldable
+  // True when the bounds came from the reader (CreasePattern::position_bounds: an SVG's drawn
+  // points, each vertex within the box of the points drawn for it grown by their rounding),
+  // false when read off the digits of the coordinates (coordinate_precision).
+  bool drawn_point_bounds = false;
+  // With gain_modes: the independent cycles of ties whose log |loop gain| was driven to 0 too,
+  // and the largest |log gain| left at the last solve.
+  int loop_gain_rows = 0;
+  double max_log_gain = 0.0;
   CreasePattern witness;              // the file's pattern with the moved coordinates
   Topology witness_topology;
 };
 
+// gain_modes (optional, one mode per interior vertex in topology order, e.g. the only modes
+// the letters allow): the least move also closes every cycle of the multiplier model in
+// those modes (loop gain 1, rows solved with the Kawasaki rows; their Jacobian by central
+// differences). Then a pattern already flat-foldable as read is moved too. nullopt when the
+// modes leave a tie with a zero multiplier, a cycle with a negative gain, or no cycle.
 std::optional<FlatFoldableWitness> flat_foldable_witness(const CreasePattern& pattern, const Topology& topology,
-                                                         double kawasaki_tolerance);
+                                                         double kawasaki_tolerance,
+                                                         const std::vector<FlatFoldMode>* gain_modes = nullptr);
 
 }  // namespace rigidfold

@@ -189,7 +189,7 @@ double reach_before_interference(const TracedBranch& b) {
 // the witness only, so "undecided" for the file.
 void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r) {
   FoldabilityReport::InputPrecision ip;
-  ip.witness_kind = "coordinates";
+  ip.witness_kind = w.drawn_point_bounds ? "drawn points" : "coordinates";
   ip.decimal_places = w.precision.decimal_places;
   ip.significant_digits = w.precision.significant_digits;
   ip.coordinate_rounding = w.precision.max_rounding;
@@ -200,11 +200,18 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
   ip.exact_data_verdict = "not decided here: as read, vertex " + std::to_string(w.worst_defect_vertex) + " misses Kawasaki by " +
                           short_text(w.max_kawasaki_defect) +
                           " rad, so the exact multiplier model does not apply (check --general judges the exact numbers)";
+  const std::string bounds_text =
+      w.drawn_point_bounds
+          ? "points drawn with " + std::to_string(ip.decimal_places) + " decimals (each vertex within the box of the points drawn for it, "
+            "grown by their rounding: half-width <= " + short_text(ip.coordinate_rounding) + ")"
+          : "coordinates written with " + std::to_string(ip.decimal_places) + " decimals (rounding <= " + short_text(ip.coordinate_rounding) + ")";
   const std::string witness_text =
-      "coordinates written with " + std::to_string(ip.decimal_places) + " decimals (rounding <= " + short_text(ip.coordinate_rounding) +
-      "); moving each by at most " + short_text(ip.max_coordinate_move) + " (" + short_text(ip.max_change_ratio) +
-      " of its rounding) makes every vertex flat-foldable (largest Kawasaki defect as read " + short_text(ip.given_residual) +
-      " rad, of the witness " + short_text(w.witness_kawasaki) + " rad)";
+      bounds_text + "; moving each coordinate by at most " + short_text(ip.max_coordinate_move) + " (" + short_text(ip.max_change_ratio) +
+      " of its allowed move) makes every vertex flat-foldable (largest Kawasaki defect as read " + short_text(ip.given_residual) +
+      " rad, of the witness " + short_text(w.witness_kawasaki) + " rad)" +
+      (w.loop_gain_rows > 0 ? " and gives each of its " + std::to_string(w.loop_gain_rows) +
+                                  " independent cycles of ties loop gain 1 in the modes the letters allow"
+                            : std::string());
   if (r.foldable()) {
     r.verdict = FoldabilityClass::kFoldableWithinTolerance;
     r.reason = "foldable within the input's precision: " + witness_text + ", and that pattern is " + r.reason;
@@ -444,6 +451,27 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
     if (w && w->explained) {
       FoldabilityVerdict wv = options.use_assignment ? verdict_with_assignment(w->witness, w->witness_topology, vo)
                                                      : verdict_ignoring_assignment(w->witness, w->witness_topology, vo);
+      // The least move aims at Kawasaki only; where the letters leave one mode per vertex and
+      // the witness fails a loop gain, a second least move also closes every cycle's gain.
+      if (options.use_assignment && wv.verdict == Verdict::kNotRigidlyFoldable && wv.obstruction &&
+          wv.obstruction->kind == Obstruction::Kind::kLoopGain) {
+        std::vector<FlatFoldMode> modes;
+        for (int v : w->witness_topology.interior_vertices) {
+          const std::vector<FlatFoldMode> m = modes_matching_letters(w->witness, w->witness_topology.stars[v].fans[0]);
+          if (m.size() != 1) break;
+          modes.push_back(m[0]);
+        }
+        if (modes.size() == w->witness_topology.interior_vertices.size()) {
+          std::optional<FlatFoldableWitness> w2 = flat_foldable_witness(pattern, topology, options.tolerances.flat_kawasaki, &modes);
+          if (w2 && w2->explained) {
+            FoldabilityVerdict wv2 = verdict_with_assignment(w2->witness, w2->witness_topology, vo);
+            if (wv2.verdict == Verdict::kRigidlyFoldable) {
+              w = std::move(w2);
+              wv = std::move(wv2);
+            }
+          }
+        }
+      }
       if (wv.verdict != Verdict::kNotApplicable) {
         c.model = FoldabilityModel::kMultiplierPropagation;
         c.why = "every interior vertex is a degree-4 vertex flat-foldable within the rounding of the coordinates "

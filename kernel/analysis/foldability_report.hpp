@@ -127,7 +127,8 @@ struct FoldabilityReport {
   struct InputPrecision {
     // "sectors": a folded form's sectors moved to close its given state (rounding_witness);
     // "coordinates": a flat pattern's coordinates moved to make every vertex flat-foldable
-    // (flat_foldable_witness; given_residual is then the largest Kawasaki defect as read).
+    // (flat_foldable_witness; given_residual is then the largest Kawasaki defect as read);
+    // "drawn points": the same, with the bounds of an SVG's drawn points (svg_reader.hpp).
     std::string witness_kind = "sectors";
     double max_coordinate_move = 0.0;   // "coordinates": largest move (length unit)
     int decimal_places = 0, significant_digits = 0;

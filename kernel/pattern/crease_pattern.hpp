@@ -37,6 +37,22 @@ struct CreasePattern {
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
   bool fold_angles_in_file = false;           // the file had edges_foldAngle (written back even if all null)
   std::vector<std::string> warnings;          // non-fatal remarks from reading/validation, with their place
+  // How precisely the file places each vertex, where the reader knows it (the SVG reader:
+  // svg_reader.hpp, "Precision"): the box, in stored units, that the true position of vertex v
+  // lies in, position_bounds.lo[v] <= vertices[v].head<2>() <= position_bounds.hi[v]. Empty
+  // when unknown (a FOLD file: coordinate_precision.hpp reads the digits of the coordinates
+  // themselves). Kept only while it has one box per vertex; a pass that renumbers vertices
+  // without it leaves the sizes unequal, and users then ignore it.
+  struct PositionBounds {
+    std::vector<Eigen::Vector2d> lo, hi;
+    int decimal_places = 0;      // D: most decimals of any coordinate number in the file
+    int significant_digits = 0;  // S: most significant digits of any coordinate number
+    double max_half_width = 0;   // largest (hi - lo) / 2 over vertices and axes (stored units)
+    bool covers(int num_vertices) const {
+      return static_cast<int>(lo.size()) == num_vertices && static_cast<int>(hi.size()) == num_vertices;
+    }
+  };
+  PositionBounds position_bounds;
 
   int num_vertices() const { return static_cast<int>(vertices.size()); }
   int num_edges() const { return static_cast<int>(edges.size()); }

@@ -20,6 +20,10 @@ void normalise_length_scale(CreasePattern& p) {
   if (e >= kMinUnscaledExponent && e <= kMaxUnscaledExponent) return;
   for (auto& v : p.vertices)
     for (int k = 0; k < 3; ++k) v[k] = std::ldexp(v[k], -e);
+  for (auto* box : {&p.position_bounds.lo, &p.position_bounds.hi})
+    for (auto& v : *box)
+      for (int k = 0; k < 2; ++k) v[k] = std::ldexp(v[k], -e);
+  p.position_bounds.max_half_width = std::ldexp(p.position_bounds.max_half_width, -e);
   p.length_exponent += e;
 }
 

@@ -117,11 +117,13 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
   }
 
   // Points 2k and 2k+1 are the ends of segment k; crossings are appended.
-  std::vector<Eigen::Vector2d> pts;
+  std::vector<Eigen::Vector2d> pts, rounding;  // rounding: per point, half-widths per axis
   pts.reserve(2 * static_cast<std::size_t>(n));
   for (const auto& g : s) {
     pts.push_back(g.a);
     pts.push_back(g.b);
+    rounding.push_back(g.a_rounding);
+    rounding.push_back(g.b_rounding);
   }
   std::vector<std::vector<std::pair<double, int>>> splits(n);
   for (int k = 0; k < n; ++k) splits[k] = {{0.0, 2 * k}, {1.0, 2 * k + 1}};
@@ -165,6 +167,17 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
     if (t <= 0 || t >= 1 || u <= 0 || u >= 1) continue;
     const int x = static_cast<int>(pts.size());
     pts.push_back(s[i].a + t * r);
+    {
+      // First-order move of the crossing: each line shifts across itself by at most d (the
+      // larger rounding of its ends, Euclidean), so the crossing moves by <= (d_i + d_j) / sin;
+      // twice that covers the second-order terms while d is small against the lengths.
+      const double di = std::max(s[i].a_rounding.norm(), s[i].b_rounding.norm());
+      const double dj = std::max(s[j].a_rounding.norm(), s[j].b_rounding.norm());
+      const double sine = std::fabs(denom) / (r.norm() * q.norm());
+      const double move = 2 * (di + dj) / sine;
+      const bool small = std::max(di, dj) <= 1e-3 * std::min(r.norm(), q.norm());
+      rounding.push_back(Eigen::Vector2d::Constant(small ? move : INFINITY));
+    }
     splits[i].emplace_back(t, x);
     splits[j].emplace_back(u, x);
     ++out.crossings;
@@ -298,6 +311,11 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
     }
   }
 
+  std::vector<Eigen::Vector2d> box_lo(np, Eigen::Vector2d::Constant(INFINITY)), box_hi(np, Eigen::Vector2d::Constant(-INFINITY));
+  for (int p = 0; p < np; ++p) {
+    box_lo[root[p]] = box_lo[root[p]].cwiseMin(pts[p] - rounding[p]);
+    box_hi[root[p]] = box_hi[root[p]].cwiseMax(pts[p] + rounding[p]);
+  }
   std::vector<int> vertex_id(np, -1);
   for (const Edge& e : edges) {
     if (!e.alive) continue;
@@ -305,6 +323,8 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
       if (vertex_id[p] < 0) {
         vertex_id[p] = static_cast<int>(out.vertices.size());
         out.vertices.push_back(position[p]);
+        out.vertex_lo.push_back(box_lo[p]);
+        out.vertex_hi.push_back(box_hi[p]);
       }
     out.edges.push_back({vertex_id[e.u], vertex_id[e.v]});
     out.edge_label.push_back(e.label);

@@ -24,6 +24,9 @@ namespace rigidfold {
 
 struct LabelledSegment {
   Eigen::Vector2d a, b;
+  // How far each end may lie from the point it stands for, per axis (the rounding of the
+  // numbers it was written with; 0: exact). Only carried into PlanarArrangement's boxes.
+  Eigen::Vector2d a_rounding = Eigen::Vector2d::Zero(), b_rounding = Eigen::Vector2d::Zero();
   int label = 0;
   int source = 0;  // caller's index of the element that drew it (for messages)
 };
@@ -48,6 +51,12 @@ struct PlanarArrangement {
   int duplicate_edges = 0;       // drawn more than once with the same label
   int collinear_vertices_removed = 0;
   std::vector<LabelConflict> conflicts;  // drawn more than once with different labels
+  // Per vertex, the box its true position lies in: the bounding box of the points merged into
+  // it, each grown by its rounding. A crossing (no drawn point) gets twice the first-order move
+  // of the crossing when each line's ends move within their rounding: (d_i + d_j) / sin(angle),
+  // d the larger rounding of a line's ends; where that is not small against the two lines'
+  // lengths (> 1e-3 of the shorter), the box is unbounded (infinite).
+  std::vector<Eigen::Vector2d> vertex_lo, vertex_hi;
 };
 
 struct ArrangementOptions {

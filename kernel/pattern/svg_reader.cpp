@@ -86,11 +86,13 @@ class NumberScanner {
     const std::size_t digits_start = i;
     while (i < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i]))) ++i;
     bool any = i > digits_start;
+    int fraction_digits = 0;
     if (i < s_.size() && s_[i] == '.') {
       ++i;
       const std::size_t f = i;
       while (i < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i]))) ++i;
       any = any || i > f;
+      fraction_digits = static_cast<int>(i - f);
     }
     if (!any) throw std::invalid_argument("expected a number at character " + std::to_string(pos_ + 1));
     if (i < s_.size() && (s_[i] == 'e' || s_[i] == 'E')) {
@@ -98,7 +100,12 @@ class NumberScanner {
       if (j < s_.size() && (s_[j] == '+' || s_[j] == '-')) ++j;
       const std::size_t e = j;
       while (j < s_.size() && std::isdigit(static_cast<unsigned char>(s_[j]))) ++j;
-      if (j > e) i = j;  // an 'e' without digits is not part of the number (e.g. "em")
+      if (j > e) {  // an 'e' without digits is not part of the number (e.g. "em")
+        int exponent = 0;
+        std::from_chars(s_.data() + e - (s_[e - 1] == '-' ? 1 : 0), s_.data() + j, exponent);  // saturates silently
+        fraction_digits = std::clamp(fraction_digits - exponent, -400, 400);
+        i = j;
+      }
     }
     std::size_t from = pos_;
     if (s_[from] == '+') ++from;
@@ -107,17 +114,53 @@ class NumberScanner {
     if (r.ec != std::errc() || r.ptr != s_.data() + i || !std::isfinite(value))
       throw std::invalid_argument("number '" + std::string(s_.substr(pos_, i - pos_)) + "' is out of range");
     pos_ = i;
+    last_decimals_ = fraction_digits;
+    last_magnitude_ = value == 0 ? kNoMagnitude : static_cast<int>(std::floor(std::log10(std::fabs(value))));
     return value;
   }
   std::string_view rest() const { return s_.substr(pos_); }
+  // Of the last number read: decimal places as written (1.25e2: 0; 5e-3: 3) and
+  // floor(log10 |value|) (kNoMagnitude for 0).
+  int last_decimals() const { return last_decimals_; }
+  int last_magnitude() const { return last_magnitude_; }
+  static constexpr int kNoMagnitude = std::numeric_limits<int>::min();
 
  private:
   std::string_view s_;
   std::size_t pos_ = 0;
+  int last_decimals_ = 0;
+  int last_magnitude_ = kNoMagnitude;
+};
+
+// The rounding of a coordinate as written: how many rounded numbers were added to make it
+// (1 for an absolute coordinate, more along a chain of relative path commands), the largest
+// magnitude among them, and the unit they were written in (px per unit). The rounding itself,
+// which needs the whole file's digits (decimal places D, significant digits S), is
+//   count x unit x max(0.5 10^-D, 0.5 10^(magnitude - S + 1))   (coordinate_precision.hpp).
+struct WrittenDigits {
+  int count = 0;
+  int magnitude = NumberScanner::kNoMagnitude;
+  double unit = 1;
+  WrittenDigits plus(const WrittenDigits& o) const {
+    return {count + o.count, std::max(magnitude, o.magnitude), std::max(unit, o.unit)};
+  }
+};
+
+// A point of the drawing with the digits of its two coordinates.
+struct DrawnPoint {
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  std::array<WrittenDigits, 2> digits{};
+};
+using DrawnSegment = std::array<DrawnPoint, 2>;
+
+struct WrittenLength {
+  double px = 0;
+  int decimals = 0;
+  WrittenDigits digits;
 };
 
 // A length attribute: a number with an optional absolute unit, in px.
-double parse_length(std::string_view text) {
+WrittenLength parse_length(std::string_view text) {
   NumberScanner sc(trim(text));
   const double v = sc.number();
   const std::string unit = lower(trim(sc.rest()));
@@ -132,7 +175,7 @@ double parse_length(std::string_view text) {
     throw std::invalid_argument("relative unit '" + unit + "' is not supported (use px or an absolute unit)");
   else throw std::invalid_argument("'" + std::string(text) + "' is not a length");
   if (!std::isfinite(v * scale)) throw std::invalid_argument("length is out of range");
-  return v * scale;
+  return {v * scale, sc.last_decimals(), {1, sc.last_magnitude(), scale}};
 }
 
 // transform="..." as one affine map (the functions compose left to right, as SVG applies them).
@@ -513,29 +556,41 @@ class SvgParser {
     };
     auto length = [&](const char* k) {
       const auto v = attr(k);
-      return v ? with_place(k, [&] { return parse_length(*v); }) : 0.0;
+      if (!v) return WrittenLength{};  // absent: exactly 0
+      const WrittenLength l = with_place(k, [&] { return parse_length(*v); });
+      note_digits(l.decimals, l.digits.magnitude);
+      return l;
     };
-    std::vector<std::array<Eigen::Vector2d, 2>> local_segments;
+    std::vector<DrawnSegment> local_segments;
     if (tag == "line") {
-      local_segments.push_back({Eigen::Vector2d(length("x1"), length("y1")), Eigen::Vector2d(length("x2"), length("y2"))});
+      const WrittenLength x1 = length("x1"), y1 = length("y1"), x2 = length("x2"), y2 = length("y2");
+      local_segments.push_back({DrawnPoint{{x1.px, y1.px}, {x1.digits, y1.digits}}, DrawnPoint{{x2.px, y2.px}, {x2.digits, y2.digits}}});
     } else if (tag == "rect") {
-      const double x = length("x"), y = length("y"), w = length("width"), h = length("height");
-      if (w < 0 || h < 0) throw InputError(place + " width", "negative size");
-      if ((attr("rx") && length("rx") > 0) || (attr("ry") && length("ry") > 0))
+      const WrittenLength x = length("x"), y = length("y"), w = length("width"), h = length("height");
+      if (w.px < 0 || h.px < 0) throw InputError(place + " width", "negative size");
+      if ((attr("rx") && length("rx").px > 0) || (attr("ry") && length("ry").px > 0))
         throw InputError(place + " rx", "rounded corners are curves, not straight creases");
-      if (w > 0 && h > 0) {
-        const Eigen::Vector2d c[4] = {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
+      if (w.px > 0 && h.px > 0) {
+        const WrittenDigits xw = x.digits.plus(w.digits), yh = y.digits.plus(h.digits);
+        const DrawnPoint c[4] = {{{x.px, y.px}, {x.digits, y.digits}},
+                                 {{x.px + w.px, y.px}, {xw, y.digits}},
+                                 {{x.px + w.px, y.px + h.px}, {xw, yh}},
+                                 {{x.px, y.px + h.px}, {x.digits, yh}}};
         for (int k = 0; k < 4; ++k) local_segments.push_back({c[k], c[(k + 1) % 4]});
       }
     } else if (tag == "polyline" || tag == "polygon") {
       const auto pts = attr("points").value_or("");
-      std::vector<Eigen::Vector2d> p;
+      std::vector<DrawnPoint> p;
       with_place("points", [&] {
         NumberScanner sc(pts);
         while (!sc.at_end()) {
-          const double x = sc.number();
+          DrawnPoint q;
+          q.at.x() = sc.number();
+          q.digits[0] = take_digits(sc);
           if (sc.at_end()) throw std::invalid_argument("odd number of coordinates");
-          p.emplace_back(x, sc.number());
+          q.at.y() = sc.number();
+          q.digits[1] = take_digits(sc);
+          p.push_back(q);
           check_segment_count(p.size());
         }
         return 0;
@@ -556,8 +611,10 @@ class SvgParser {
     for (const auto& [a, b] : local_segments) {
       check_segment_count(0);
       LabelledSegment s;
-      s.a = (frame.ctm * Eigen::Vector3d(a.x(), a.y(), 1)).head<2>();
-      s.b = (frame.ctm * Eigen::Vector3d(b.x(), b.y(), 1)).head<2>();
+      s.a = (frame.ctm * Eigen::Vector3d(a.at.x(), a.at.y(), 1)).head<2>();
+      s.b = (frame.ctm * Eigen::Vector3d(b.at.x(), b.at.y(), 1)).head<2>();
+      segment_digits.push_back({a.digits, b.digits});
+      segment_linear.push_back(frame.ctm.topLeftCorner<2, 2>().cwiseAbs());
       if (!s.a.allFinite() || !s.b.allFinite()) throw InputError(place, "a transformed coordinate is not finite");
       s.label = label_index;
       s.source = source;
@@ -607,9 +664,10 @@ class SvgParser {
   }
 
   // Path data: M L H V Z (absolute and relative, implicit repeats). Curves are refused.
-  void parse_path(std::string_view d, std::vector<std::array<Eigen::Vector2d, 2>>& out) const {
+  void parse_path(std::string_view d, std::vector<DrawnSegment>& out) {
     NumberScanner sc(d);
     Eigen::Vector2d cur(0, 0), start(0, 0);
+    std::array<WrittenDigits, 2> cur_digits{}, start_digits{};
     char cmd = 0;
     bool first = true;
     while (!sc.at_end()) {
@@ -623,8 +681,9 @@ class SvgParser {
           throw std::invalid_argument(std::string("unknown path command '") + c + "' at character " + std::to_string(sc.position()));
         if (first && c != 'M' && c != 'm') throw std::invalid_argument("path data must begin with M or m");
         if (c == 'Z' || c == 'z') {
-          if ((cur - start).squaredNorm() > 0) out.push_back({cur, start});
+          if ((cur - start).squaredNorm() > 0) out.push_back({DrawnPoint{cur, cur_digits}, DrawnPoint{start, start_digits}});
           cur = start;
+          cur_digits = start_digits;
           continue;
         }
       } else if (cmd == 0 || cmd == 'Z' || cmd == 'z') {
@@ -632,39 +691,62 @@ class SvgParser {
       }
       const bool rel = std::islower(static_cast<unsigned char>(cmd));
       Eigen::Vector2d next = cur;
+      std::array<WrittenDigits, 2> next_digits = cur_digits;
+      // A relative coordinate carries the rounding of every number added to make it.
+      auto coordinate = [&](int axis, bool relative) {
+        const double v = sc.number();
+        const WrittenDigits d = take_digits(sc);
+        next[axis] = relative ? cur[axis] + v : v;
+        next_digits[axis] = relative ? cur_digits[axis].plus(d) : d;
+      };
       switch (std::toupper(static_cast<unsigned char>(cmd))) {
         case 'M': {
-          const double x = sc.number(), y = sc.number();
           // A relative m at the very start is absolute (SVG 1.1, 8.3.2).
-          next = (rel && !first) ? Eigen::Vector2d(cur + Eigen::Vector2d(x, y)) : Eigen::Vector2d(x, y);
+          coordinate(0, rel && !first);
+          coordinate(1, rel && !first);
           cur = start = next;
+          cur_digits = start_digits = next_digits;
           cmd = rel ? 'l' : 'L';  // further pairs are implicit line-tos
           first = false;
           continue;
         }
-        case 'L': {
-          const double x = sc.number(), y = sc.number();
-          next = rel ? Eigen::Vector2d(cur + Eigen::Vector2d(x, y)) : Eigen::Vector2d(x, y);
+        case 'L':
+          coordinate(0, rel);
+          coordinate(1, rel);
           break;
-        }
-        case 'H': {
-          const double x = sc.number();
-          next.x() = rel ? cur.x() + x : x;
+        case 'H':
+          coordinate(0, rel);
           break;
-        }
-        case 'V': {
-          const double y = sc.number();
-          next.y() = rel ? cur.y() + y : y;
+        case 'V':
+          coordinate(1, rel);
           break;
-        }
       }
       if (!next.allFinite()) throw std::invalid_argument("coordinate is not finite");
       if (out.size() + segments.size() >= static_cast<std::size_t>(kMaxSvgSegments))
         throw std::invalid_argument("more than " + std::to_string(kMaxSvgSegments) + " line segments (input_limits.hpp)");
-      out.push_back({cur, next});
+      out.push_back({DrawnPoint{cur, cur_digits}, DrawnPoint{next, next_digits}});
       cur = next;
+      cur_digits = next_digits;
     }
   }
+
+  // The file-wide digits of coordinate numbers (WrittenDigits), and one number's digits.
+  void note_digits(int decimals, int magnitude) {
+    max_decimals = std::max(max_decimals, decimals);
+    if (magnitude != NumberScanner::kNoMagnitude) max_significant = std::max(max_significant, decimals + magnitude + 1);
+  }
+  WrittenDigits take_digits(const NumberScanner& sc) {
+    note_digits(sc.last_decimals(), sc.last_magnitude());
+    return {1, sc.last_magnitude(), 1};
+  }
+
+ public:
+  // Per segment of `segments`: the digits of its two ends, and |linear part| of its transform.
+  std::vector<std::array<std::array<WrittenDigits, 2>, 2>> segment_digits;
+  std::vector<Eigen::Matrix2d> segment_linear;
+  int max_decimals = 0, max_significant = 0;
+
+ private:
 
   std::string source_;
   XML_Parser parser_ = nullptr;
@@ -751,10 +833,17 @@ int drop_faces_outside_boundary(CreasePattern& p, PlanarArrangement& arr) {
   }
   CreasePattern q;
   q.coords_2d = true;
+  q.length_exponent = p.length_exponent;
+  const bool bounded = p.position_bounds.covers(p.num_vertices());
+  q.position_bounds = p.position_bounds;
+  q.position_bounds.lo.clear();
+  q.position_bounds.hi.clear();
   q.extra = p.extra;
   q.warnings = p.warnings;
   PlanarArrangement kept = arr;
   kept.vertices.clear();
+  kept.vertex_lo.clear();
+  kept.vertex_hi.clear();
   kept.edges.clear();
   kept.edge_label.clear();
   kept.edge_source.clear();
@@ -763,7 +852,13 @@ int drop_faces_outside_boundary(CreasePattern& p, PlanarArrangement& arr) {
     if (id[v] < 0) {
       id[v] = q.num_vertices();
       q.vertices.push_back(p.vertices[v]);
+      if (bounded) {
+        q.position_bounds.lo.push_back(p.position_bounds.lo[v]);
+        q.position_bounds.hi.push_back(p.position_bounds.hi[v]);
+      }
       kept.vertices.push_back(arr.vertices[v]);
+      kept.vertex_lo.push_back(arr.vertex_lo[v]);
+      kept.vertex_hi.push_back(arr.vertex_hi[v]);
     }
     return id[v];
   };
@@ -811,6 +906,25 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
   summary.merge_tolerance_relative = options.merge_tolerance;
   summary.merge_tolerance = options.merge_tolerance * summary.pattern_size;
 
+  // The rounding of each segment end (WrittenDigits), through its transform's linear part
+  // (the transform's own numbers are taken as exact: a rounded translation, rotation or
+  // uniform scale moves the drawing as a whole, which no verdict depends on).
+  {
+    const int D = std::max(parser.max_decimals, 0);
+    const int S = parser.max_significant;
+    auto rounding = [&](const WrittenDigits& d) {
+      if (d.count == 0) return 0.0;  // an absent attribute: exactly 0
+      double u = 0.5 * std::pow(10.0, -D);
+      if (d.magnitude != NumberScanner::kNoMagnitude) u = std::max(u, 0.5 * std::pow(10.0, d.magnitude - S + 1));
+      return d.count * d.unit * u;
+    };
+    for (std::size_t k = 0; k < parser.segments.size(); ++k) {
+      const auto& [da, db] = parser.segment_digits[k];
+      const Eigen::Matrix2d& A = parser.segment_linear[k];
+      parser.segments[k].a_rounding = A * Eigen::Vector2d(rounding(da[0]), rounding(da[1]));
+      parser.segments[k].b_rounding = A * Eigen::Vector2d(rounding(db[0]), rounding(db[1]));
+    }
+  }
   ArrangementOptions ao;
   ao.tolerance = summary.merge_tolerance;
   ao.max_candidate_pairs = kMaxSvgCandidatePairs;
@@ -871,6 +985,8 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
     }
     PlanarArrangement kept = arr;
     kept.vertices.clear();
+    kept.vertex_lo.clear();
+    kept.vertex_hi.clear();
     kept.edges.clear();
     kept.edge_label.clear();
     kept.edge_source.clear();
@@ -883,6 +999,8 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
         if (id[v] < 0) {
           id[v] = static_cast<int>(kept.vertices.size());
           kept.vertices.push_back(arr.vertices[v]);
+          kept.vertex_lo.push_back(arr.vertex_lo[v]);
+          kept.vertex_hi.push_back(arr.vertex_hi[v]);
         }
         edge[k] = id[v];
       }
@@ -940,6 +1058,16 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
       throw InputError(e.place(), what.substr(std::min(what.size(), e.place().size() + 2)) + where);
     }
   };
+  // How precisely each vertex is placed (CreasePattern::position_bounds): the boxes of the
+  // arrangement, in FOLD's axes (y flipped).
+  p.position_bounds.decimal_places = parser.max_decimals;
+  p.position_bounds.significant_digits = parser.max_significant;
+  for (std::size_t v = 0; v < arr.vertices.size(); ++v) {
+    p.position_bounds.lo.emplace_back(arr.vertex_lo[v].x(), 0.0 - arr.vertex_hi[v].y());
+    p.position_bounds.hi.emplace_back(arr.vertex_hi[v].x(), 0.0 - arr.vertex_lo[v].y());
+    const Eigen::Vector2d half = 0.5 * (arr.vertex_hi[v] - arr.vertex_lo[v]);
+    p.position_bounds.max_half_width = std::max(p.position_bounds.max_half_width, half.maxCoeff());
+  }
   const std::vector<std::string> base_warnings = p.warnings;
   validate();
   summary.faces_outside_boundary_removed = drop_faces_outside_boundary(p, arr);

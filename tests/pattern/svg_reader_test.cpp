@@ -168,6 +168,70 @@ TEST(SvgReader, CrossingLinesAreSplitAndFacesBuilt) {
   EXPECT_NEAR(t.stars[t.interior_vertices[0]].sector_sum(), 2 * std::numbers::pi, 1e-12);
 }
 
+// CreasePattern::position_bounds: each vertex within the box of its drawn points, each grown by
+// count x max(0.5 10^-D, 0.5 10^(magnitude - S + 1)) (D: most decimals, S: most significant
+// digits of the file's numbers; count: numbers added to make the coordinate).
+TEST(SvgReader, PositionBoundsComeFromTheDigitsOfTheNumbers) {
+  // D = 3 (2.125), S = 4 (2.125): "10" then reads as 10.00, rounding 0.005.
+  const CreasePattern p = parse_svg(svg(kSquare + "<path d=\"M0,2.125 l10,0\" stroke=\"red\"/>"), "b.svg");
+  const auto& b = p.position_bounds;
+  ASSERT_TRUE(b.covers(p.num_vertices()));
+  EXPECT_EQ(b.decimal_places, 3);
+  EXPECT_EQ(b.significant_digits, 4);
+  auto find = [&](double x, double y) {
+    for (int v = 0; v < p.num_vertices(); ++v)
+      if (std::abs(p.vertices[v].x() - x) < 1e-12 && std::abs(p.vertices[v].y() - y) < 1e-12) return v;
+    return -1;
+  };
+  // The mountain's right end (10, 2.125): x = 0 + 10 (relative: two numbers, largest 10),
+  // y = 2.125 + 0 (two numbers of magnitude 0 or none).
+  const int end = find(10, -2.125);
+  ASSERT_GE(end, 0);
+  EXPECT_NEAR(b.hi[end].x() - 10, 2 * 0.005, 1e-15);
+  EXPECT_NEAR(10 - b.lo[end].x(), 2 * 0.005, 1e-15);
+  EXPECT_NEAR(b.hi[end].y() + 2.125, 2 * 0.0005, 1e-15);
+  // Its left end, absolute: x "0" (0.5 10^-3), y "2.125" (0.5 10^-3).
+  const int start = find(0, -2.125);
+  ASSERT_GE(start, 0);
+  EXPECT_NEAR(b.hi[start].x(), 0.0005, 1e-15);
+  EXPECT_NEAR(b.hi[start].y() + 2.125, 0.0005, 1e-15);
+  // A crossing: a bounded box around the computed point, wider than its lines' ends' rounding.
+  // The square written "10.000": D = 3, S = 5, so every number here is known to 0.0005. (With
+  // whole numbers alone, D = 0, the ends' rounding 0.5 is not small against the lines, and the
+  // crossing's box is unbounded.)
+  const std::string square3 = "<rect x=\"0\" y=\"0\" width=\"10.000\" height=\"10.000\" fill=\"none\" stroke=\"#000\"/>\n";
+  const CreasePattern q = parse_svg(svg(square3 + "<line x1=\"0\" y1=\"0\" x2=\"10\" y2=\"10\" stroke=\"red\"/>"
+                                                  "<line x1=\"10\" y1=\"0\" x2=\"0\" y2=\"10\" stroke=\"blue\"/>"),
+                                    "x.svg");
+  ASSERT_TRUE(q.position_bounds.covers(q.num_vertices()));
+  for (int v = 0; v < q.num_vertices(); ++v) {
+    const Eigen::Vector2d lo = q.position_bounds.lo[v], hi = q.position_bounds.hi[v];
+    EXPECT_TRUE(std::isfinite(lo.x()) && std::isfinite(hi.y())) << v;
+    EXPECT_LE(lo.x(), q.vertices[v].x());
+    EXPECT_GE(hi.y(), q.vertices[v].y());
+    if (std::abs(q.vertices[v].x() - 5) < 1e-12) {
+      // First order: each diagonal shifts by <= 0.0005 sqrt 2, at right angles: twice that sum.
+      EXPECT_NEAR(hi.x() - q.vertices[v].x(), 2 * 2 * 0.0005 * std::sqrt(2.0), 1e-12) << "the crossing";
+    }
+  }
+}
+
+TEST(SvgCorpusBounds, EveryVertexLiesInItsBox) {
+  for (const char* name : {"miura-ori.svg", "miura_sharpangle.svg", "singlesquaretwist.svg", "hypar.svg", "reschTriTessellation.svg",
+                           "huffmanWaterbomb.svg", "traditionalCrane.svg"}) {
+    const CreasePattern p = read_svg(std::string(RIGIDFOLD_CORPUS_DIR) + "/origami-simulator/" + name);
+    const auto& b = p.position_bounds;
+    ASSERT_TRUE(b.covers(p.num_vertices())) << name;
+    EXPECT_GE(b.decimal_places, 1) << name;
+    for (int v = 0; v < p.num_vertices(); ++v)
+      for (int k = 0; k < 2; ++k) {
+        EXPECT_LE(b.lo[v][k], p.vertices[v][k]) << name << " vertex " << v;
+        EXPECT_GE(b.hi[v][k], p.vertices[v][k]) << name << " vertex " << v;
+        EXPECT_GT(b.hi[v][k] - b.lo[v][k], 0.0) << name << " vertex " << v;
+      }
+  }
+}
+
 TEST(SvgReader, TJunctionsSplitTheLineTheyMeet) {
   // A valley from the left side to the middle of a mountain that crosses the square.
   const CreasePattern p = parse_svg(svg(kSquare + "<line x1=\"5\" y1=\"0\" x2=\"5\" y2=\"10\" stroke=\"red\"/>"
