@@ -53,7 +53,12 @@ Sampled sample(const FoldMotion& m, int samples) {
 
 std::string polyline(const std::vector<Vec2>& pts, const char* cls, const SvgOptions& o) {
   std::string out = std::string("<polyline class=\"") + cls + "\" fill=\"none\" stroke-width=\"" + num(o.stroke) + "\" points=\"";
-  for (std::size_t k = 0; k < pts.size(); ++k) out += (k ? " " : "") + num(pts[k].x()) + "," + num(pts[k].y());
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (k) out += ' ';
+    out += num(pts[k].x());
+    out += ',';
+    out += num(pts[k].y());
+  }
   return out + "\"/>\n";
 }
 
