@@ -219,7 +219,9 @@ TEST(SvgReader, PositionBoundsComeFromTheDigitsOfTheNumbers) {
 TEST(SvgCorpusBounds, EveryVertexLiesInItsBox) {
   for (const char* name : {"miura-ori.svg", "miura_sharpangle.svg", "singlesquaretwist.svg", "hypar.svg", "reschTriTessellation.svg",
                            "huffmanWaterbomb.svg", "traditionalCrane.svg"}) {
-    const CreasePattern p = read_svg(std::string(RIGIDFOLD_CORPUS_DIR) + "/origami-simulator/" + name);
+    const std::string path = corpus(std::string("origami-simulator/") + name);
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not checked out beside the project";
+    const CreasePattern p = read_svg(path);
     const auto& b = p.position_bounds;
     ASSERT_TRUE(b.covers(p.num_vertices())) << name;
     EXPECT_GE(b.decimal_places, 1) << name;
