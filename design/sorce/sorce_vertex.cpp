@@ -34,6 +34,12 @@ std::array<ScalarFunction, 4> vertex_fold_angles(const VertexSectors& sectors, V
 }
 
 SorceVertex sorce_vertex(const VertexSectors& sectors, const std::array<ScalarFunction, 4>& gamma,
+                         const std::array<ScalarFunction, 4>& offset, const std::array<double, 4>& thickness) {
+  const std::array<VectorFunction, 4> no_split{};
+  return sorce_vertex(sectors, gamma, offset, thickness, no_split);
+}
+
+SorceVertex sorce_vertex(const VertexSectors& sectors, const std::array<ScalarFunction, 4>& gamma,
                          const std::array<ScalarFunction, 4>& offset, const std::array<double, 4>& thickness,
                          const std::array<VectorFunction, 4>& split) {
   SorceVertex v;

@@ -48,7 +48,11 @@ struct SorceVertex {
 // (empty: not split).
 SorceVertex sorce_vertex(const VertexSectors& sectors, const std::array<ScalarFunction, 4>& gamma,
                          const std::array<ScalarFunction, 4>& offset, const std::array<double, 4>& thickness,
-                         const std::array<VectorFunction, 4>& split = {});
+                         const std::array<VectorFunction, 4>& split);
+// No fold split. (An overload, not a "= {}" default argument: clang 14 then leaves
+// std::function's default constructor undefined at link time in the sanitizer build.)
+SorceVertex sorce_vertex(const VertexSectors& sectors, const std::array<ScalarFunction, 4>& gamma,
+                         const std::array<ScalarFunction, 4>& offset, const std::array<double, 4>& thickness);
 
 // A vertex split along its collinear folds 1 and 3 (alpha_1 + alpha_2 = pi, e.g. the
 // bird's-foot vertex), the 3D offset perpendicular to the plane of folds 1 and 3 with
