@@ -214,11 +214,14 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
     }
   }
   // A vertex sits at the mean of the drawn ends in its cluster (crossings only when it has
-  // none), so exactly shared ends keep their exact coordinates.
+  // none), so exactly shared ends keep their exact coordinates: where every drawn end of the
+  // cluster is the same point, that point itself (a floating-point mean of n equal numbers
+  // may miss it by an ulp, and a written pattern must read back bit for bit).
   std::vector<int> root(np);
   for (int p = 0; p < np; ++p) root[p] = uf.find(p);
   std::vector<Eigen::Vector2d> sum_end(np, Eigen::Vector2d::Zero()), sum_all(np, Eigen::Vector2d::Zero());
-  std::vector<int> count_end(np, 0), count_all(np, 0);
+  std::vector<int> count_end(np, 0), count_all(np, 0), first_end(np, -1);
+  std::vector<char> ends_equal(np, 1);
   for (int p = 0; p < np; ++p) {
     const int r = root[p];
     sum_all[r] += pts[p];
@@ -226,11 +229,16 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
     if (p < 2 * n) {
       sum_end[r] += pts[p];
       ++count_end[r];
+      if (first_end[r] < 0) first_end[r] = p;
+      else if (pts[p] != pts[first_end[r]]) ends_equal[r] = 0;
     }
   }
   std::vector<Eigen::Vector2d> position(np);
-  for (int p = 0; p < np; ++p)
-    if (root[p] == p) position[p] = count_end[p] > 0 ? Eigen::Vector2d(sum_end[p] / count_end[p]) : Eigen::Vector2d(sum_all[p] / count_all[p]);
+  for (int p = 0; p < np; ++p) {
+    if (root[p] != p) continue;
+    if (count_end[p] > 0) position[p] = ends_equal[p] ? pts[first_end[p]] : Eigen::Vector2d(sum_end[p] / count_end[p]);
+    else position[p] = sum_all[p] / count_all[p];
+  }
   {
     std::vector<std::vector<int>> members(np);
     for (int p = 0; p < np; ++p) members[root[p]].push_back(p);
