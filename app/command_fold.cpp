@@ -1,4 +1,4 @@
-// rigidfold fold PATTERN.fold --angles ANGLES.json --out FOLDED.fold [--obj FOLDED.obj] [--json]
+// rigidfold fold PATTERN.fold --angles ANGLES.json --out FOLDED.fold [--obj FOLDED.obj] [--stl FOLDED.stl] [--json]
 // Places the faces for the given fold angles and reports the closure mismatch.
 // ANGLES.json: {"<edge index>": degrees, ...} or an array with one entry (or null) per edge.
 // Creases not listed keep the pattern's edges_foldAngle (0 where it has none).
@@ -24,7 +24,7 @@ namespace rigidfold::cli {
 void add_fold_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("fold", "Fold a pattern to given fold angles; write the folded state and report closure mismatch");
   struct Args {
-    std::string pattern, angles, out, obj;
+    std::string pattern, angles, out, obj, stl;
     bool json = false;
   };
   auto a = std::make_shared<Args>();
@@ -32,6 +32,7 @@ void add_fold_command(CLI::App& app) {
   cmd->add_option("--angles", a->angles, "JSON: {\"edge\": degrees} or array of degrees per edge")->required();
   cmd->add_option("--out", a->out, "output FOLD with a foldedForm frame")->required();
   cmd->add_option("--obj", a->obj, "also write the folded faces as OBJ");
+  cmd->add_option("--stl", a->stl, "also write the folded faces as binary STL (triangulated, float32)");
   cmd->add_flag("--json", a->json, "print the report as JSON");
   cmd->callback([a] {
     // Every path checked against the others before any work; both outputs committed together.
@@ -40,6 +41,7 @@ void add_fold_command(CLI::App& app) {
     outputs.add_input("--angles", a->angles);
     outputs.add_output("--out", a->out);
     if (!a->obj.empty()) outputs.add_output("--obj", a->obj);
+    if (!a->stl.empty()) outputs.add_output("--stl", a->stl);
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
     const CreasePattern p = read_fold(a->pattern);
     const Topology t = build_topology(p, a->pattern);
@@ -47,6 +49,7 @@ void add_fold_command(CLI::App& app) {
     const FoldedGeometry g = place_faces(p, t, rho, reference_fold_angles(p, t));
     outputs.stage(a->out, write_fold_string(with_folded_frame(p, g, rho, "folded by rigidfold")));
     if (!a->obj.empty()) outputs.stage(a->obj, folded_obj(p, g));
+    if (!a->stl.empty()) outputs.stage(a->stl, folded_stl(p, g));
     outputs.commit();
     nlohmann::ordered_json j;
     j["pattern"] = a->pattern;
@@ -58,7 +61,7 @@ void add_fold_command(CLI::App& app) {
     if (a->json) {
       std::cout << j.dump(2) << "\n";
     } else {
-      std::cout << "folded " << a->pattern << " -> " << a->out << (a->obj.empty() ? "" : " and " + a->obj) << "\n";
+      std::cout << "folded " << a->pattern << " -> " << a->out << (a->obj.empty() ? "" : " and " + a->obj) << (a->stl.empty() ? "" : " and " + a->stl) << "\n";
       std::cout << "  closure mismatch " << to_file_units(p, g.max_mismatch) << " (relative " << g.relative_mismatch() << ") over "
                 << g.non_tree_hinges << " non-tree hinges";
       if (g.worst_edge >= 0) std::cout << ", worst at edge " << g.worst_edge;

@@ -1,8 +1,13 @@
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/pattern/length_scale.hpp"
+#include "kernel/pattern/topology.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <numbers>
+#include <stdexcept>
 
 namespace rigidfold {
 
@@ -40,10 +45,125 @@ std::string folded_obj(const CreasePattern& pattern, const FoldedGeometry& folde
   }
   for (const auto& f : pattern.faces) {
     s += "f";
-    for (int v : f) s += " " + std::to_string(v + 1);
+    for (int v : f) {
+      s += ' ';  // appended piecewise: GCC 12 -Wrestrict false positive on " " + string&&
+      s += std::to_string(v + 1);
+    }
     s += "\n";
   }
   return s;
+}
+
+namespace {
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+void put_u32(std::string& out, std::uint32_t x) {
+  for (int k = 0; k < 4; ++k) out += static_cast<char>((x >> (8 * k)) & 0xffu);
+}
+void put_f32(std::string& out, double x) {
+  const float f = static_cast<float>(x);
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  put_u32(out, bits);  // little-endian whatever the host's byte order
+}
+
+}  // namespace
+
+std::vector<std::array<int, 3>> triangulate_face(const CreasePattern& pattern, const std::vector<int>& face) {
+  const int m = static_cast<int>(face.size());
+  Eigen::Vector3d n = newell_normal(pattern, face);
+  if (m < 3 || !(n.norm() > 0)) throw std::invalid_argument("face with no area cannot be triangulated");
+  n.normalize();
+  // In-plane axes: any unit vector perpendicular to n, and n x it (counter-clockwise about n).
+  Eigen::Vector3d u = std::fabs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  u = (u - u.dot(n) * n).normalized();
+  const Eigen::Vector3d w = n.cross(u);
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int v : face) c += pattern.vertices[v];
+  c /= m;
+  std::vector<Eigen::Vector2d> q(m);
+  double scale2 = 0;
+  for (int i = 0; i < m; ++i) {
+    const Eigen::Vector3d d = pattern.vertices[face[i]] - c;
+    q[i] = Eigen::Vector2d(d.dot(u), d.dot(w));
+    scale2 = std::max(scale2, q[i].squaredNorm());
+  }
+  // Orientation test with a margin of rounding: |cross| below it counts as collinear.
+  const double eps = 1e-13 * scale2;
+  auto orient = [&](int a, int b, int p) { return cross2(q[b] - q[a], q[p] - q[a]); };
+  std::vector<int> ring(m);
+  for (int i = 0; i < m; ++i) ring[i] = i;
+  std::vector<std::array<int, 3>> out;
+  out.reserve(m - 2);
+  while (ring.size() > 3) {
+    const int r = static_cast<int>(ring.size());
+    bool clipped = false;
+    for (int k = 0; k < r && !clipped; ++k) {
+      const int a = ring[(k + r - 1) % r], b = ring[k], cc = ring[(k + 1) % r];
+      const double turn = orient(a, b, cc);
+      if (std::fabs(turn) <= eps) {
+        // b on the straight side from a to cc: no triangle, the side passes through it.
+        if ((q[b] - q[a]).dot(q[cc] - q[b]) > 0) {
+          ring.erase(ring.begin() + k);
+          clipped = true;
+        }
+        continue;
+      }
+      if (turn < 0) continue;  // reflex corner
+      // An ear: no other corner inside the triangle or on its sides.
+      bool empty = true;
+      for (int j : ring) {
+        if (j == a || j == b || j == cc) continue;
+        if (orient(a, b, j) >= -eps && orient(b, cc, j) >= -eps && orient(cc, a, j) >= -eps) {
+          empty = false;
+          break;
+        }
+      }
+      if (!empty) continue;
+      out.push_back({face[a], face[b], face[cc]});
+      ring.erase(ring.begin() + k);
+      clipped = true;
+    }
+    if (!clipped) throw std::invalid_argument("face crosses itself: no ear to clip");
+  }
+  if (orient(ring[0], ring[1], ring[2]) > eps) out.push_back({face[ring[0]], face[ring[1]], face[ring[2]]});
+  if (out.empty()) throw std::invalid_argument("face with no area cannot be triangulated");
+  return out;
+}
+
+std::string folded_stl(const CreasePattern& pattern, const FoldedGeometry& folded) {
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> triangle_face;
+  for (int f = 0; f < pattern.num_faces(); ++f) {
+    std::vector<std::array<int, 3>> t;
+    try {
+      t = triangulate_face(pattern, pattern.faces[f]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("STL: face " + std::to_string(f) + ": " + e.what());
+    }
+    triangles.insert(triangles.end(), t.begin(), t.end());
+    triangle_face.insert(triangle_face.end(), t.size(), f);
+  }
+  if (triangles.size() >= (std::size_t{1} << 32)) throw std::invalid_argument("STL: 2^32 triangles or more");
+  std::string out(80, ' ');
+  const std::string title = "rigidfold folded state (binary STL, float32 little-endian)";  // not "solid...": not ASCII STL
+  out.replace(0, title.size(), title);
+  out.reserve(84 + 50 * triangles.size());
+  put_u32(out, static_cast<std::uint32_t>(triangles.size()));
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    const int f = triangle_face[k];
+    const Eigen::Isometry3d& motion = folded.face_motions[f];
+    const Eigen::Vector3d normal = (motion.linear() * newell_normal(pattern, pattern.faces[f])).normalized();
+    for (int i = 0; i < 3; ++i) put_f32(out, normal[i]);
+    for (int v : triangles[k]) {
+      const Eigen::Vector3d x = to_file_units(pattern, motion * pattern.vertices[v]);
+      for (int i = 0; i < 3; ++i) put_f32(out, x[i]);
+    }
+    out += '\0';
+    out += '\0';
+  }
+  return out;
 }
 
 }  // namespace rigidfold
