@@ -1,13 +1,15 @@
-// rigidfold import CP.svg --out CP.fold [--merge-tolerance REL] [--json]
+// rigidfold import CP.svg|CP.opx --out CP.fold [--merge-tolerance REL] [--json]
 // Reads an SVG crease pattern in Origami Simulator's colours (kernel/pattern/svg_reader.hpp)
-// and writes it as FOLD; prints what the import did (segments per letter, crossings split,
-// points merged and the tolerance used, ignored elements). Exit 0, or 2 on bad input.
+// or an ORIPA .opx (kernel/pattern/opx_reader.hpp, by extension) and writes it as FOLD;
+// prints what the import did (segments per letter, crossings split, points merged and the
+// tolerance used, ignored elements). Exit 0, or 2 on bad input.
 #include <iostream>
 
 #include "app/commands.hpp"
 #include "app/summary_stream.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/output_set.hpp"
+#include "kernel/pattern/opx_reader.hpp"
 #include "kernel/pattern/svg_reader.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -74,14 +76,14 @@ void print_text(const nlohmann::ordered_json& j) {
 }  // namespace
 
 void add_import_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("import", "SVG crease pattern (Origami Simulator colours) -> FOLD");
+  auto* cmd = app.add_subcommand("import", "SVG crease pattern (Origami Simulator colours) or ORIPA .opx -> FOLD");
   struct Args {
     std::string in, out;
     double merge = SvgReadOptions{}.merge_tolerance;
     bool json = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("pattern", a->in, "crease pattern (.svg): red M, blue V, black B, yellow F, magenta U, green C")->required();
+  cmd->add_option("pattern", a->in, "crease pattern (.svg: red M, blue V, black B, yellow F, magenta U, green C; or ORIPA .opx)")->required();
   cmd->add_option("--out", a->out, "FOLD file to write")->required();
   cmd->add_option("--merge-tolerance", a->merge, "points closer than this fraction of the pattern size are one vertex (default 1e-4)")
       ->check(CLI::Range(1e-12, 0.099));
@@ -95,7 +97,9 @@ void add_import_command(CLI::App& app) {
     SvgReadOptions options;
     options.merge_tolerance = a->merge;
     SvgImportSummary summary;
-    const CreasePattern p = read_svg(a->in, options, &summary);
+    OpxImportSummary opx;
+    const CreasePattern p = is_opx_path(a->in) ? read_opx(a->in, options, &opx) : read_svg(a->in, options, &summary);
+    if (is_opx_path(a->in)) summary = opx.arrangement;  // elements: the .opx's; drawn: its crease lines
     const Topology t = build_topology(p, a->in);
     outputs.stage(a->out, write_fold_string(p));
     outputs.commit();

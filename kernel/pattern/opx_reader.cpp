@@ -1,0 +1,334 @@
+#include "kernel/pattern/opx_reader.hpp"
+
+#include <expat.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <exception>
+#include <regex>
+#include <set>
+#include <string_view>
+#include <vector>
+
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/input_limits.hpp"
+#include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/svg_writer.hpp"
+
+namespace rigidfold {
+namespace {
+
+constexpr int kTypeAux = 0;
+constexpr int kMaxValueChars = 1000;  // the text of one <int> or <double>
+
+struct OpxLine {
+  int index = 0;        // in the lines array
+  long xml_line = 0;    // of its <object> in the .opx
+  int type = 0;
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // XMLEncoder leaves out properties equal to 0
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+class OpxParser {
+ public:
+  explicit OpxParser(const std::string& source) : source_(source) {}
+
+  void parse(const std::string& text) {
+    XML_Parser parser = XML_ParserCreate(nullptr);
+    if (!parser) throw std::bad_alloc();
+    parser_ = parser;
+    XML_SetUserData(parser, this);
+    XML_SetElementHandler(parser, &OpxParser::on_start, &OpxParser::on_end);
+    XML_SetCharacterDataHandler(parser, &OpxParser::on_text);
+    XML_SetStartDoctypeDeclHandler(parser, &OpxParser::on_doctype);
+    XML_SetEntityDeclHandler(parser, &OpxParser::on_entity_decl);
+    XML_SetSkippedEntityHandler(parser, &OpxParser::on_skipped_entity);
+    XML_SetParamEntityParsing(parser, XML_PARAM_ENTITY_PARSING_NEVER);
+    const XML_Status status = XML_Parse(parser, text.data(), static_cast<int>(text.size()), XML_TRUE);
+    const XML_LChar* message = XML_ErrorString(XML_GetErrorCode(parser));
+    const std::string xml_error = message ? message : "";
+    const auto line = XML_GetCurrentLineNumber(parser), column = XML_GetCurrentColumnNumber(parser);
+    XML_ParserFree(parser);
+    parser_ = nullptr;
+    if (error_) std::rethrow_exception(error_);
+    if (status != XML_STATUS_OK)
+      throw InputError(source_ + ": line " + std::to_string(line) + ", column " + std::to_string(column + 1), "XML: " + xml_error);
+    if (!saw_dataset_) throw InputError(source_, "no <object class=\"oripa.DataSet\"> in <java>: not an ORIPA .opx");
+    if (!saw_lines_) throw InputError(source_, "the oripa.DataSet has no \"lines\" property");
+  }
+
+  std::vector<OpxLine> lines;
+  int elements = 0;
+
+ private:
+  enum class Role { Java, DataSet, Lines, Array, Entry, LineObject, Property, Value, Skip };
+  struct Node {
+    Role role;
+    std::string property;  // Property: its name
+  };
+
+  template <class F>
+  static void guarded(void* self_ptr, F&& f) {
+    auto* self = static_cast<OpxParser*>(self_ptr);
+    if (self->error_) return;
+    try {
+      f(*self);
+    } catch (...) {
+      self->error_ = std::current_exception();
+      XML_StopParser(self->parser_, XML_FALSE);
+    }
+  }
+  static void XMLCALL on_start(void* p, const XML_Char* name, const XML_Char** atts) {
+    guarded(p, [&](OpxParser& s) { s.start(name, atts); });
+  }
+  static void XMLCALL on_end(void* p, const XML_Char*) {
+    guarded(p, [&](OpxParser& s) { s.end(); });
+  }
+  static void XMLCALL on_text(void* p, const XML_Char* text, int len) {
+    guarded(p, [&](OpxParser& s) {
+      if (s.stack_.empty() || s.stack_.back().role != Role::Value) return;
+      if (s.text_.size() + len > kMaxValueChars) throw InputError(s.line_place(), "a value longer than " + std::to_string(kMaxValueChars) + " characters");
+      s.text_.append(text, len);
+    });
+  }
+  static void XMLCALL on_doctype(void* p, const XML_Char*, const XML_Char*, const XML_Char*, int has_internal_subset) {
+    guarded(p, [&](OpxParser& s) {
+      if (has_internal_subset) throw InputError(s.here(), "a document type with an internal subset (entity declarations) is refused");
+    });
+  }
+  static void XMLCALL on_entity_decl(void* p, const XML_Char* name, int, const XML_Char*, int, const XML_Char*, const XML_Char*,
+                                     const XML_Char*, const XML_Char*) {
+    guarded(p, [&](OpxParser& s) { throw InputError(s.here(), std::string("entity declaration '") + name + "' is refused"); });
+  }
+  static void XMLCALL on_skipped_entity(void* p, const XML_Char* name, int) {
+    guarded(p, [&](OpxParser& s) { throw InputError(s.here(), std::string("entity reference '&") + name + ";' is refused"); });
+  }
+
+  std::string here() const { return source_ + ": line " + std::to_string(XML_GetCurrentLineNumber(parser_)); }
+  // The line being read: "CP.opx: lines[3] (line 40)".
+  std::string line_place() const {
+    if (lines.empty()) return here();
+    return source_ + ": lines[" + std::to_string(lines.back().index) + "] (line " + std::to_string(lines.back().xml_line) + ")";
+  }
+
+  static const char* attribute(const char** atts, const char* key) {
+    for (int i = 0; atts[i]; i += 2)
+      if (std::string_view(atts[i]) == key) return atts[i + 1];
+    return nullptr;
+  }
+  long integer(std::string_view raw, const std::string& place, const char* what) const {
+    const std::string_view t = trim(raw);
+    long v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
+      throw InputError(place, std::string(what) + " '" + std::string(raw) + "' is not an integer");
+    return v;
+  }
+
+  void start(const char* tag_c, const char** atts) {
+    if (++elements > kMaxSvgElements)
+      throw InputError(source_, "more than " + std::to_string(kMaxSvgElements) + " XML elements (input_limits.hpp)");
+    if (static_cast<int>(stack_.size()) >= kMaxSvgDepth)
+      throw InputError(here(), "elements nested more than " + std::to_string(kMaxSvgDepth) + " deep (input_limits.hpp)");
+    const std::string tag(tag_c);
+    const char* cls = attribute(atts, "class");
+    const char* property = attribute(atts, "property");
+    if (stack_.empty()) {
+      if (tag != "java") throw InputError(source_, "root element is <" + tag + ">, not <java>: not an ORIPA .opx");
+      stack_.push_back({Role::Java, {}});
+      return;
+    }
+    switch (stack_.back().role) {
+      case Role::Java:
+        if (tag == "object" && cls && std::string_view(cls) == "oripa.DataSet" && !saw_dataset_) {
+          saw_dataset_ = true;
+          stack_.push_back({Role::DataSet, {}});
+        } else {
+          stack_.push_back({Role::Skip, {}});
+        }
+        return;
+      case Role::DataSet:
+        if (tag == "void" && property && std::string_view(property) == "lines") {
+          if (saw_lines_) throw InputError(here(), "a second \"lines\" property");
+          saw_lines_ = true;
+          stack_.push_back({Role::Lines, {}});
+        } else {
+          stack_.push_back({Role::Skip, {}});  // title, memo, versions ...
+        }
+        return;
+      case Role::Lines: {
+        if (tag != "array" || !cls || std::string_view(cls) != "oripa.OriLineProxy")
+          throw InputError(here(), "lines: <" + tag + "> where <array class=\"oripa.OriLineProxy\"> was expected");
+        const char* length = attribute(atts, "length");
+        if (!length) throw InputError(here(), "lines: <array> without length");
+        length_ = integer(length, here(), "lines: array length");
+        if (length_ < 0 || length_ > kMaxSvgSegments)
+          throw InputError(here(), "lines: array length " + std::to_string(length_) + " outside [0, " + std::to_string(kMaxSvgSegments) +
+                                       "] (input_limits.hpp)");
+        stack_.push_back({Role::Array, {}});
+        return;
+      }
+      case Role::Array: {
+        const char* index = attribute(atts, "index");
+        if (tag != "void" || !index) throw InputError(here(), "lines: <" + tag + "> in the array where <void index=\"i\"> was expected");
+        const long i = integer(index, here(), "lines: index");
+        if (i < 0 || i >= length_)
+          throw InputError(here(), "lines: index " + std::to_string(i) + " outside the array of length " + std::to_string(length_));
+        if (!indices_.insert(i).second) throw InputError(here(), "lines: index " + std::to_string(i) + " given twice");
+        entry_index_ = static_cast<int>(i);
+        stack_.push_back({Role::Entry, {}});
+        return;
+      }
+      case Role::Entry: {
+        if (tag != "object" || !cls || std::string_view(cls) != "oripa.OriLineProxy" || attribute(atts, "idref"))
+          throw InputError(here(), "lines[" + std::to_string(entry_index_) + "]: <" + tag +
+                                       "> where <object class=\"oripa.OriLineProxy\"> was expected");
+        OpxLine l;
+        l.index = entry_index_;
+        l.xml_line = static_cast<long>(XML_GetCurrentLineNumber(parser_));
+        lines.push_back(l);
+        seen_.clear();
+        stack_.push_back({Role::LineObject, {}});
+        return;
+      }
+      case Role::LineObject:
+        if (tag != "void" || !property) throw InputError(line_place(), "<" + tag + "> where <void property=\"...\"> was expected");
+        if (!seen_.insert(property).second) throw InputError(line_place(), std::string(property) + ": given twice");
+        stack_.push_back({Role::Property, property});
+        return;
+      case Role::Property:
+        if (tag != "int" && tag != "double")
+          throw InputError(line_place(), stack_.back().property + ": <" + tag + "> where <int> or <double> was expected");
+        text_.clear();
+        value_tag_ = tag;
+        stack_.push_back({Role::Value, {}});
+        return;
+      case Role::Value:
+        throw InputError(line_place(), "<" + tag + "> inside a number");
+      case Role::Skip:
+        stack_.push_back({Role::Skip, {}});
+        return;
+    }
+  }
+
+  void end() {
+    if (stack_.back().role == Role::Value) {
+      const std::string& name = stack_[stack_.size() - 2].property;
+      const std::string place = line_place() + ": " + name;
+      OpxLine& l = lines.back();
+      if (name == "type") {
+        if (value_tag_ != "int") throw InputError(place, "<" + value_tag_ + "> where <int> was expected");
+        const long t = integer(text_, place, "type");
+        if (t < 0 || t > 4) throw InputError(place, "unknown line type " + std::to_string(t) + " (0 aux, 1 cut, 2 mountain, 3 valley, 4 cut)");
+        l.type = static_cast<int>(t);
+      } else if (name == "x0" || name == "y0" || name == "x1" || name == "y1") {
+        const std::string_view t = trim(text_);
+        double v = 0;
+        const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+        if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
+          throw InputError(place, "'" + text_ + "' is not a finite number");
+        (name == "x0" ? l.x0 : name == "y0" ? l.y0 : name == "x1" ? l.x1 : l.y1) = v;
+      }
+      // Other properties of a line (none in ORIPA's files so far) carry nothing here.
+    }
+    stack_.pop_back();
+  }
+
+  std::string source_;
+  XML_Parser parser_ = nullptr;
+  std::exception_ptr error_;
+  std::vector<Node> stack_;
+  bool saw_dataset_ = false, saw_lines_ = false;
+  long length_ = 0;
+  int entry_index_ = 0;
+  std::set<long> indices_;
+  std::set<std::string> seen_;
+  std::string text_, value_tag_;
+};
+
+std::string number(double x) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x + 0.0);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+bool is_opx_path(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".opx";
+}
+
+CreasePattern parse_opx(const std::string& text, const std::string& source, const SvgReadOptions& options, OpxImportSummary* summary_out) {
+  OpxParser parser(source);
+  parser.parse(text);
+  OpxImportSummary summary;
+  summary.lines = static_cast<int>(parser.lines.size());
+  // The crease lines as an SVG of one <line> each (ORIPA's y points down, as SVG's), so
+  // that they get the SVG import's arrangement, clean-up and validation; <line> #k of it is
+  // drawn[k - 1].
+  static const Assignment kLetter[5] = {Assignment::Boundary, Assignment::Boundary, Assignment::Mountain, Assignment::Valley, Assignment::Cut};
+  std::vector<const OpxLine*> drawn;
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\">\n";
+  for (const OpxLine& l : parser.lines) {
+    ++summary.lines_by_type[l.type];
+    if (l.type == kTypeAux) continue;
+    drawn.push_back(&l);
+    const Assignment a = kLetter[l.type];
+    svg += "<line x1=\"" + number(l.x0) + "\" y1=\"" + number(l.y0) + "\" x2=\"" + number(l.x1) + "\" y2=\"" + number(l.y1) + "\" stroke=\"" +
+           svg_stroke_colour(a) + "\"" + (has_fold_sign(a) ? " stroke-opacity=\"0\"" : "") + "/>\n";
+  }
+  svg += "</svg>\n";
+  if (drawn.empty())
+    throw InputError(source, "no crease lines: " + std::to_string(summary.lines) + " lines, none of type cut, mountain, valley or model cut");
+  // "<line> #k (line N)" of the SVG -> "lines[i] (line L)" of the .opx.
+  static const std::regex element(R"(<line> #(\d+) \(line \d+\))");
+  auto rename = [&](const std::string& s) {
+    std::string out;
+    auto it = std::sregex_iterator(s.begin(), s.end(), element);
+    std::size_t last = 0;
+    for (; it != std::sregex_iterator(); ++it) {
+      const auto& m = *it;
+      out += s.substr(last, m.position() - last);
+      const std::size_t k = std::stoul(m[1]);
+      if (k >= 1 && k <= drawn.size())
+        out += "lines[" + std::to_string(drawn[k - 1]->index) + "] (line " + std::to_string(drawn[k - 1]->xml_line) + ")";
+      else
+        out += m.str();
+      last = m.position() + m.length();
+    }
+    return out + s.substr(last);
+  };
+  CreasePattern p;
+  try {
+    p = parse_svg(svg, source, options, &summary.arrangement);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    const std::string rest = what.substr(std::min(what.size(), e.place().empty() ? 0 : e.place().size() + 2));
+    throw InputError(rename(e.place()), rename(rest));
+  }
+  for (auto& w : p.warnings) w = rename(w);
+  if (summary.lines_by_type[kTypeAux] > 0)
+    p.warnings.push_back(source + ": " + std::to_string(summary.lines_by_type[kTypeAux]) + " auxiliary lines (type 0) ignored: they are no creases");
+  p.extra["file_creator"] = "rigidfold import (ORIPA .opx)";
+  summary.arrangement.elements = parser.elements;
+  summary.arrangement.drawn_elements = static_cast<int>(drawn.size());
+  summary.arrangement.ignored_elements = summary.lines_by_type[kTypeAux];
+  if (summary_out) *summary_out = summary;
+  return p;
+}
+
+CreasePattern read_opx(const std::string& path, const SvgReadOptions& options, OpxImportSummary* summary) {
+  return parse_opx(read_input_file(path), path, options, summary);
+}
+
+}  // namespace rigidfold
