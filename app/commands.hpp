@@ -21,6 +21,7 @@ void add_report_command(CLI::App& app);    // rigidfold report DIR --out OUTDIR 
 void add_trace_command(CLI::App& app);
 void add_string_command(CLI::App& app);   // rigidfold string forward|design ... (origami strings)
 void add_import_command(CLI::App& app);   // rigidfold import CP.svg --out CP.fold (SVG crease pattern -> FOLD)
+void add_export_command(CLI::App& app);   // rigidfold export P.fold --svg P.svg (crease pattern -> SVG in Origami Simulator colours)
 void add_assignments_command(CLI::App& app);  // rigidfold assignments PATTERN [--json] [--list N]
 void add_energy_command(CLI::App& app);  // rigidfold energy PATTERN --rest REST [--k-m K --k-v K] [--json]
 void add_waterbomb_command(CLI::App& app);  // rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]

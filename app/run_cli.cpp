@@ -21,6 +21,7 @@ int run_cli(int argc, const char* const* argv) {
   add_trace_command(app);
   add_string_command(app);
   add_import_command(app);
+  add_export_command(app);
   add_assignments_command(app);
   add_energy_command(app);
   add_waterbomb_command(app);
