@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/terminal_progress.hpp"
 #include "kernel/analysis/assignment_enumeration.hpp"
 #include "kernel/pattern/input_error.hpp"
@@ -77,7 +78,7 @@ void add_assignments_command(CLI::App& app) {
     j["listed"] = list;
     j["seconds"] = r.seconds;
     if (a->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     std::cout << a->pattern << "\n";

@@ -5,6 +5,7 @@
 
 #include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/foldability_json.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -67,7 +68,7 @@ void add_check_command(CLI::App& app) {
     if (a->json) {
       nlohmann::ordered_json j = {{"file", a->pattern}};
       j.update(foldability_json(r));
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     print_text(a->pattern, r);

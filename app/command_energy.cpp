@@ -3,7 +3,7 @@
 // Each state also says whether it keeps the M/V letters and whether panels pass through each
 // other there (the springs know neither).
 // Stable states of any crease pattern with torsional springs at its creases
-// (kernel/energy/stable_state_search.hpp): the rest state and N random starts that respect
+// (kernel/energy/crease_spring_states.hpp, JSON by app/energy_json.hpp): the rest state and N random starts that respect
 // the letters, each minimised on the loop-closure manifold with no symmetry imposed; every
 // state printed has passed its checks (closure <= 1e-12 rad, stationarity, reduced Hessian
 // positive definite).
@@ -13,46 +13,18 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/energy_json.hpp"
+#include "app/provenance.hpp"
 #include "app/number_flags.hpp"
-#include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/crease_stiffness.hpp"
-#include "kernel/energy/stable_state_search.hpp"
-#include "kernel/geometry/fold_angles.hpp"
-#include "kernel/geometry/fold_angles_input.hpp"
+#include "kernel/energy/crease_spring_states.hpp"
+#include "kernel/energy/rest_angles.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
-#include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::cli {
-namespace {
-
-constexpr int kMaxFreeCreases = 400;          // dense tangent-space steps (constrained_equilibrium.hpp)
-constexpr double kRestClosureTolerance = 1e-6;  // radians: a rest state read from decimals closes to ~1e-12
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-// Rest angles per edge from a JSON of fold angles or from a FOLD file of the same pattern
-// (its edges_foldAngle, else its 3D coordinates).
-Eigen::VectorXd read_rest(const std::string& path, const CreasePattern& p, const Topology& t) {
-  if (ends_with(path, ".json")) return read_fold_angles_json(path, p, t);
-  if (!ends_with(path, ".fold")) throw InputError("--rest", "must be a .json of fold angles or a .fold of the same pattern: " + path);
-  const CreasePattern r = read_pattern(path);
-  if (r.num_vertices() != p.num_vertices() || r.num_edges() != p.num_edges())
-    throw InputError(path, "has " + std::to_string(r.num_vertices()) + " vertices and " + std::to_string(r.num_edges()) +
-                               " edges; the pattern has " + std::to_string(p.num_vertices()) + " and " +
-                               std::to_string(p.num_edges()));
-  for (int e = 0; e < p.num_edges(); ++e)
-    if (r.edges[e] != p.edges[e]) throw InputError(path + ": edges_vertices[" + std::to_string(e) + "]", "differs from the pattern's");
-  if (r.fold_angles_in_file) return stored_fold_angles(r);
-  if (!r.coords_2d) return reference_fold_angles(r, build_topology(r, path));
-  throw InputError(path, "has neither edges_foldAngle nor 3D coordinates: no rest state in it");
-}
-
-}  // namespace
 
 void add_energy_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("energy", "Stable states of a pattern with crease springs (multistart, no symmetry imposed)");
@@ -74,78 +46,40 @@ void add_energy_command(CLI::App& app) {
   cmd->add_option("--seed", a->seed, "seed of the random starts (default 1)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->callback([a] {
-    if (a->starts < 0 || a->starts > 1000) throw InputError("--starts", "must be between 0 and 1000");
+    if (a->starts < 0 || a->starts > kMaxSpringStateStarts)
+      throw InputError("--starts", "must be between 0 and " + std::to_string(kMaxSpringStateStarts));
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
-    const ClosureSystem sys(p, t);
-    if (sys.num_unknowns() > kMaxFreeCreases)
-      throw InputError(a->pattern, std::to_string(sys.num_unknowns()) + " free creases; the energy search takes at most " +
-                                       std::to_string(kMaxFreeCreases));
-    StiffnessByAssignment k;
-    k.mountain = a->k_m;
-    k.valley = a->k_v;
-    k.unassigned = a->k_u;
-    Eigen::VectorXd stiffness;
+    CreaseSpringProblem problem;
+    problem.stiffness.mountain = a->k_m;
+    problem.stiffness.valley = a->k_v;
+    problem.stiffness.unassigned = a->k_u;
+    problem.search.random_starts = a->starts;
+    problem.search.seed = a->seed;
+    problem.rest_place = a->rest;
+    CreaseSpringStates found;
     try {
-      stiffness = stiffness_by_assignment(p, k);
+      // Checked before the rest file is read, as the flags are.
+      stiffness_by_assignment(p, problem.stiffness);
+      problem.rest = read_rest_state(a->rest, p, t);
+      found = crease_spring_states(p, t, problem);
     } catch (const InputError& e) {
-      const std::string flag = e.place() == "stiffness.mountain" ? "--k-m" : e.place() == "stiffness.valley" ? "--k-v" : "--k-u";
-      throw InputError(flag, "must be a finite number >= 0");
+      // The kernel names its parameters; the user typed flags.
+      if (e.place().rfind("stiffness.", 0) == 0) {
+        const std::string flag = e.place() == "stiffness.mountain" ? "--k-m" : e.place() == "stiffness.valley" ? "--k-v" : "--k-u";
+        throw InputError(flag, "must be a finite number >= 0");
+      }
+      if (e.place() == "pattern") throw InputError(a->pattern, std::string(e.what()).substr(e.place().size() + 2));
+      throw;
     }
-    const Eigen::VectorXd rest = read_rest(a->rest, p, t);
-    const CreaseSprings springs = make_crease_springs(p, stiffness, rest);
-    Eigen::VectorXd r;
-    Eigen::SparseMatrix<double> J;
-    sys.evaluate(sys.unknowns_from_edges(rest), r, J);
-    const double rest_residual = r.size() ? r.lpNorm<Eigen::Infinity>() : 0.0;
-    if (!(rest_residual <= kRestClosureTolerance)) {
-      Eigen::Index row = 0;
-      r.cwiseAbs().maxCoeff(&row);
-      throw InputError(a->rest, "the rest state does not close: loop-closure residual " + std::to_string(rest_residual) +
-                                    " rad (row " + std::to_string(row) + ", allowed " + std::to_string(kRestClosureTolerance) + ")");
-    }
-    StableStateSearchOptions o;
-    o.random_starts = a->starts;
-    o.seed = a->seed;
-    const StableStateSearch s = search_stable_states(p, t, sys, springs, rest, o);
-    if (s.states.empty())
-      throw NoAnswerError("no stable state reached from " + std::to_string(s.starts) + " starts (" +
-                          std::to_string(s.starts_converged) + " minimisations converged)");
+    const StableStateSearch& s = found.search;
 
     nlohmann::ordered_json j;
     j["file"] = a->pattern;
     j["rest"] = a->rest;
-    j["rest_closure_residual_rad"] = rest_residual;
-    j["stiffness"] = {{"mountain", a->k_m}, {"valley", a->k_v}, {"unassigned", a->k_u}};
-    j["starts"] = s.starts;
-    j["starts_on_manifold"] = s.starts_on_manifold;
-    j["starts_converged"] = s.starts_converged;
-    nlohmann::ordered_json states = nlohmann::ordered_json::array();
-    for (const auto& f : s.states) {
-      nlohmann::ordered_json sj;
-      sj["energy"] = f.state.energy;
-      sj["reached_from_starts"] = f.reached_from;
-      sj["from_rest"] = f.from_rest;
-      sj["keeps_letters"] = f.creases_against_letters.empty();
-      sj["creases_against_letters"] = f.creases_against_letters;
-      sj["facet_interference"] = !f.interfering_faces.empty();
-      nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
-      for (const auto& [a, b] : f.interfering_faces) pairs.push_back({a, b});
-      sj["interfering_face_pairs"] = pairs;
-      sj["closure_residual_rad"] = f.state.closure_residual;
-      sj["stationarity_residual"] = f.state.stationarity_residual;
-      sj["tangent_dimension"] = f.state.tangent_dimension;
-      sj["min_reduced_hessian_eigenvalue"] = std::isfinite(f.state.min_eigenvalue) ? nlohmann::ordered_json(f.state.min_eigenvalue)
-                                                                                   : nlohmann::ordered_json(nullptr);
-      nlohmann::ordered_json angles = nlohmann::ordered_json::array();
-      for (int e = 0; e < p.num_edges(); ++e)
-        angles.push_back(t.edge_is_hinge[e] ? nlohmann::ordered_json(to_degrees(f.state.edge_angles[e])) : nlohmann::ordered_json(nullptr));
-      sj["fold_angles_deg"] = angles;
-      states.push_back(sj);
-    }
-    j["stable_states"] = states;
+    j.update(crease_spring_states_json(p, t, problem, found));
     if (a->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     std::cout << a->pattern << ": " << s.states.size() << " stable state(s) from " << s.starts << " starts (the rest state and "

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/number_flags.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -131,7 +132,7 @@ void add_info_command(CLI::App& app) {
     const CreasePattern p = read_pattern(*path);
     const Topology t = build_topology(p, *path);
     const auto j = info_json(*path, p, t, *tol);
-    if (*json) std::cout << j.dump(2) << "\n";
+    if (*json) std::cout << with_provenance(j).dump(2) << "\n";
     else print_text(j);
   });
 }

@@ -16,6 +16,7 @@
 
 #include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/foldability_json.hpp"
 #include "kernel/pattern/length_scale.hpp"
 #include "kernel/analysis/foldability_report.hpp"
@@ -184,7 +185,7 @@ void add_report_command(CLI::App& app) {
       if (j.contains("relative_closure_mismatch")) std::cout << "; folded state closure mismatch " << j["relative_closure_mismatch"].get<double>();
       std::cout << "\n";
     }
-    outputs.stage(json_path, report.dump(2) + "\n");
+    outputs.stage(json_path, with_provenance(report).dump(2) + "\n");
     outputs.stage(md_path, markdown(report));
     outputs.commit();
   });

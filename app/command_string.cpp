@@ -55,6 +55,7 @@
 
 #include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
 #include "design/strings/miura_string.hpp"
 #include "design/strings/string_fit_ceres.hpp"
@@ -277,7 +278,7 @@ std::vector<Eigen::Vector3d> read_curve(const Reader& r) {
 }
 
 void print_or_json(const json& j, bool as_json, const std::string& text) {
-  if (as_json) std::cout << j.dump(2) << "\n";
+  if (as_json) std::cout << with_provenance(j).dump(2) << "\n";
   else std::cout << text;
 }
 

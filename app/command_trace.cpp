@@ -47,6 +47,7 @@
 
 #include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
 #include "kernel/pattern/length_scale.hpp"
 #include "kernel/analysis/trace_motion.hpp"
@@ -309,7 +310,7 @@ void add_trace_command(CLI::App& app) {
     for (const auto& f : files) outs.push_back(f.first);
     j["outputs"] = outs;
     if (a->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     print_text(a->pattern, p, m, files);

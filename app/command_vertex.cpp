@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
@@ -72,7 +73,7 @@ void add_miura_command(CLI::App& vertex) {
     j["closure_residual_rad"] =
         vertex_closure_residual(std::span<const double>(st.sectors.data(), 4), std::span<const double>(st.fold_angles.data(), 4)).norm();
     if (a->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     char line[256];
@@ -133,7 +134,7 @@ void add_vertex_command(CLI::App& app) {
     j["degenerate"] = b.degenerate;
     j["input_range_deg"] = {{"feasible", range.feasible}, {"min_abs", to_degrees(range.min_abs)}, {"max_abs", to_degrees(range.max_abs)}};
     if (a->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     std::cout << "spherical 4R, twists " << a->twists[0] << ", " << a->twists[1] << ", " << a->twists[2] << ", " << a->twists[3]

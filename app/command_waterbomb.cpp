@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
 #include "design/waterbomb/waterbomb_curve.hpp"
@@ -155,7 +156,7 @@ void add_waterbomb_command(CLI::App& app) {
     }
     outputs.commit();
     if (a->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << with_provenance(j).dump(2) << "\n";
       return;
     }
     char line[320];

@@ -3,6 +3,7 @@
 
 #include "app/commands.hpp"
 #include "app/number_flags.hpp"
+#include "app/provenance.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
 
@@ -11,7 +12,7 @@ namespace rigidfold::cli {
 int run_cli(int argc, const char* const* argv) {
   CLI::App app{"rigidfold: exact kinematics of rigid origami"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "rigidfold 0.1.0");
+  app.set_version_flag("--version", version_text());
   add_info_command(app);
   add_fold_command(app);
   add_check_command(app);
@@ -27,6 +28,10 @@ int run_cli(int argc, const char* const* argv) {
   add_waterbomb_command(app);
   // No floating-point flag of any command takes NaN or +-inf (app/number_flags.hpp).
   require_finite_numbers(app);
+  record_invocation(app, argc, argv);
+  struct ForgetInvocation {
+    ~ForgetInvocation() { forget_invocation(); }
+  } forget_at_return;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

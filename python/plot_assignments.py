@@ -15,6 +15,7 @@ import json
 import math
 import sys
 
+from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")
@@ -73,6 +74,7 @@ def main():
     fig.suptitle(a.title or (f"{summary['classes']} classes of {summary['assignments']} flat-folding assignments, "
                              f"{summary['foldable_classes']} rigid (M red, V blue dashed)"), fontsize=10)
     fig.tight_layout()
+    stamp_inputs(fig, [a.pattern, a.classes], version_of(a.classes))
     fig.savefig(a.out, dpi=110)
     return 0
 

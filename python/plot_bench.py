@@ -12,6 +12,7 @@ import math
 import sys
 from collections import defaultdict
 
+from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")
@@ -274,6 +275,7 @@ def main():
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
+    stamp_inputs(fig, [path])
     fig.savefig(f"{outdir}/time_vs_size.png", dpi=120)
     plt.close(fig)
 
@@ -329,6 +331,7 @@ def main():
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
+    stamp_inputs(fig, [path])
     fig.savefig(f"{outdir}/time_vs_error.png", dpi=120)
     plt.close(fig)
     lines.append("## Time against error (solver settings)")
@@ -385,6 +388,7 @@ def main():
     ax2.grid(True, which="both", alpha=0.3)
     ax2.legend(fontsize=7)
     fig.tight_layout()
+    stamp_inputs(fig, [path])
     fig.savefig(f"{outdir}/memory_accuracy.png", dpi=120)
     plt.close(fig)
     lines.append("## Peak memory and accuracy against size")

@@ -22,6 +22,7 @@ import json
 import re
 import sys
 
+from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")
@@ -110,6 +111,7 @@ def main(argv):
     fig.suptitle(a.title or f"{check.get('file', '')}: branches (colour: every letter kept), bifurcations (red), fold limit (x)",
                  fontsize=9)
     fig.tight_layout()
+    stamp_inputs(fig, [a.check_json, *a.csvs], version_of(a.check_json))
     fig.savefig(a.out, dpi=110)
     print(a.out)
     return 0

@@ -21,6 +21,7 @@ import csv
 import os
 import sys
 
+from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")
@@ -120,6 +121,7 @@ def plot(paths, out, edges_filter, title, all_edges, flat_start=True):
         fig.suptitle(title)
     fig.tight_layout()
     tmp = out + ".tmp.png"
+    stamp_inputs(fig, paths)
     fig.savefig(tmp, dpi=130)
     os.replace(tmp, out)
     plt.close(fig)

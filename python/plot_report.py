@@ -12,6 +12,7 @@ import os
 import subprocess
 import sys
 
+from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")
@@ -94,6 +95,7 @@ def main():
         draw_crease_pattern(ax, load(p["file"]), f"{p['name']}\n{p['local_verdict'][:60]}")
     fig.suptitle("Bundled crease patterns (mountain red dashed, valley blue)")
     fig.tight_layout()
+    stamp_inputs(fig, [p["file"] for p in patterns], version_of(os.path.join(args.outdir, "report.json")))
     fig.savefig(os.path.join(figdir, "crease_patterns.png"), dpi=110)
     plt.close(fig)
 
@@ -105,6 +107,7 @@ def main():
         draw_folded(fig.add_subplot(1, 2, 2, projection="3d"), load(p["folded_file"]),
                     f"folded; closure mismatch {p['relative_closure_mismatch']:.1e} (relative)")
         fig.tight_layout()
+        stamp_inputs(fig, [p["file"], p["folded_file"]], version_of(os.path.join(args.outdir, "report.json")))
         fig.savefig(os.path.join(figdir, f"{p['name']}_folded.png"), dpi=110)
         plt.close(fig)
 
@@ -127,6 +130,7 @@ def main():
             ax.grid(alpha=0.3)
         axes[1].legend(fontsize=7, ncol=2)
         fig.tight_layout()
+        stamp_inputs(fig, [f"{args.cli} vertex s4r (closed form, twists in the titles)"])
         fig.savefig(os.path.join(figdir, "vertex_modes.png"), dpi=110)
         plt.close(fig)
     print(f"figures: {figdir}")

@@ -4,8 +4,10 @@
 #include <string>
 
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/geometry/fold_angles_input.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
@@ -83,6 +85,30 @@ Eigen::VectorXd rest_angles_from_frame(const CreasePattern& pattern, int frame) 
   }
   const Topology topo = build_topology(folded, place);
   return reference_fold_angles(folded, topo);
+}
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
+
+Eigen::VectorXd read_rest_state(const std::string& path, const CreasePattern& pattern, const Topology& topology) {
+  if (ends_with(path, ".json")) return read_fold_angles_json(path, pattern, topology);
+  if (!ends_with(path, ".fold")) throw InputError("--rest", "must be a .json of fold angles or a .fold of the same pattern: " + path);
+  const CreasePattern rest = read_pattern(path);
+  if (rest.num_vertices() != pattern.num_vertices() || rest.num_edges() != pattern.num_edges())
+    throw InputError(path, "has " + std::to_string(rest.num_vertices()) + " vertices and " + std::to_string(rest.num_edges()) +
+                               " edges; the pattern has " + std::to_string(pattern.num_vertices()) + " and " +
+                               std::to_string(pattern.num_edges()));
+  for (int e = 0; e < pattern.num_edges(); ++e)
+    if (rest.edges[e] != pattern.edges[e])
+      throw InputError(path + ": edges_vertices[" + std::to_string(e) + "]", "differs from the pattern's");
+  if (rest.fold_angles_in_file) return stored_fold_angles(rest);
+  if (!rest.coords_2d) return reference_fold_angles(rest, build_topology(rest, path));
+  throw InputError(path, "has neither edges_foldAngle nor 3D coordinates: no rest state in it");
 }
 
 }  // namespace rigidfold

@@ -3,7 +3,10 @@
 // (Rest angles given directly are just a per-edge vector: make_crease_springs checks them.)
 #include <Eigen/Core>
 
+#include <string>
+
 #include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
 
@@ -19,5 +22,13 @@ namespace rigidfold {
 //   ".vertices_coords[v]") for a missing frame, a wrong count or a non-finite or
 //   out-of-range value.
 Eigen::VectorXd rest_angles_from_frame(const CreasePattern& pattern, int frame = -1);
+
+// A rest state read from a file (the CLI's --rest): a ".json" of fold angles as for
+// `rigidfold fold --angles` (kernel/geometry/fold_angles_input.hpp), or a ".fold" of the same
+// pattern (same vertex and edge counts and edges_vertices) whose edges_foldAngle, else whose
+// 3D coordinates, give the angles. Output: one angle per edge, radians.
+// Throws InputError naming the file and the place (another extension, a different pattern,
+// a FOLD with neither fold angles nor 3D coordinates).
+Eigen::VectorXd read_rest_state(const std::string& path, const CreasePattern& pattern, const Topology& topology);
 
 }  // namespace rigidfold

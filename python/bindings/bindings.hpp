@@ -15,6 +15,10 @@ void bind_pattern(py::module_& m);   // CreasePattern, FOLD load/save, generator
 void bind_analysis(py::module_& m);  // check, trace, enumerate_assignments
 void bind_vertex(py::module_& m);    // flat-foldable degree-4 closed forms, the closure system
 void bind_design(py::module_& m);    // waterbomb bistability
+void bind_energy(py::module_& m);    // stable states of any pattern with crease springs
+void bind_thick(py::module_& m);     // thick-panel vertices (seed 003 ch. 4)
+void bind_sorce(py::module_& m);     // SORCE rolling joints (seed 002)
+void bind_metamaterial(py::module_& m);  // square-twist metamaterial unit (seed 003 3.3.2)
 
 // A JSON value as plain Python objects (dict, list, float, int, str, bool, None), through the
 // standard json module so that numbers keep their exact values.

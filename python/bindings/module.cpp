@@ -5,6 +5,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
 #include "python/bindings/bindings.hpp"
+#include "rigidfold_version.hpp"
 
 namespace rigidfold::python {
 
@@ -45,8 +46,15 @@ PYBIND11_MODULE(_core, m) {
     }
   });
 
+  m.attr("__version__") = rigidfold::kRigidfoldVersion;  // the CLI's provenance "rigidfold_version"
+  m.attr("__commit__") = rigidfold::kRigidfoldCommit;
+
   bind_pattern(m);
   bind_analysis(m);
   bind_vertex(m);
   bind_design(m);
+  bind_energy(m);
+  bind_thick(m);
+  bind_sorce(m);
+  bind_metamaterial(m);
 }

@@ -12,33 +12,51 @@ Patterns:   load, parse_fold, save, CreasePattern (.vertices, .edges, .assignmen
 Analysis:   check, trace, enumerate_assignments
 Vertex:     flat_fold_angles, flat_fold_multipliers, miura_vertex
 Closure:    ClosureSystem, closure_jacobian
-Design:     waterbomb_bistability, string_pattern, string_forward, design_string_from_curve
+Energy:     stable_states (crease springs on any pattern, no symmetry imposed)
+Thick:      ThickVertex, thick_bennett_vertex, thick_myard_vertex, thick_diamond_vertex,
+            thick_waterbomb_vertex (seed 003 ch. 4)
+Design:     waterbomb_bistability, string_pattern, string_forward, design_string_from_curve,
+            sorce_vertex, sorce_circular_vertex (seed 002 rolling joints),
+            square_twist_unit, square_twist_height_stationary_points (seed 003 metamaterial)
+Version:    __version__ (the CLI's provenance "rigidfold_version"), __commit__
 Errors:     InputError (a ValueError; the message names the file and the place in it, e.place
             the place alone), NoAnswerError (a RuntimeError; e.residual)
 Figures:    rigidfold.plot (matplotlib)
 """
 
 from rigidfold._core import (
-    ClosureSystem,
-    CreasePattern,
-    InputError,
-    NoAnswerError,
+    __commit__,
+    __version__,
     bundled_examples,
     check,
+    ClosureSystem,
     corrugated_unit,
+    CreasePattern,
     design_string_from_curve,
     enumerate_assignments,
     flat_fold_angles,
     flat_fold_multipliers,
+    InputError,
     load,
     miura_fold_angles,
     miura_ori,
     miura_vertex,
+    NoAnswerError,
     parse_fold,
     save,
+    sorce_circular_vertex,
+    sorce_vertex,
     square_twist,
+    square_twist_height_stationary_points,
+    square_twist_unit,
+    stable_states,
     string_forward,
     string_pattern,
+    thick_bennett_vertex,
+    thick_diamond_vertex,
+    thick_myard_vertex,
+    thick_waterbomb_vertex,
+    ThickVertex,
     trace,
     waterbomb_base,
     waterbomb_bistability,

@@ -30,8 +30,14 @@ def cli():
         pytest.fail(f"the rigidfold CLI is not built at {path} (set RIGIDFOLD_CLI)")
 
     def run_json(*args):
+        """The CLI's JSON without its "provenance" (the version and the command line, which a
+        Python call does not have), after checking that the provenance names this command."""
         out = subprocess.run([path, *args, "--json"], check=True, capture_output=True, text=True).stdout
-        return json.loads(out)
+        doc = json.loads(out)
+        provenance = doc.pop("provenance")
+        assert provenance["rigidfold_version"] == rigidfold.__version__
+        assert provenance["arguments"] == [*args, "--json"]
+        return doc
 
     return run_json
 

@@ -1,0 +1,21 @@
+#pragma once
+// The JSON of the stable states of a pattern with crease springs
+// (kernel/energy/crease_spring_states.hpp), as `rigidfold energy --json` prints it after its
+// "file" and "rest" keys, and as the Python rigidfold.stable_states returns it. Serialises only.
+//
+// Keys: rest_closure_residual_rad, stiffness {mountain, valley, unassigned}, starts,
+// starts_on_manifold, starts_converged, stable_states [{energy, reached_from_starts,
+// from_rest, keeps_letters, creases_against_letters, facet_interference,
+// interfering_face_pairs, closure_residual_rad, stationarity_residual, tangent_dimension,
+// min_reduced_hessian_eigenvalue (null when the tangent space is empty), fold_angles_deg
+// (per edge; null for an edge that is not a hinge)}]. Numbers round-trip exactly.
+#include <nlohmann/json.hpp>
+
+#include "kernel/energy/crease_spring_states.hpp"
+
+namespace rigidfold::cli {
+
+nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, const Topology& topology,
+                                                 const CreaseSpringProblem& problem, const CreaseSpringStates& states);
+
+}  // namespace rigidfold::cli

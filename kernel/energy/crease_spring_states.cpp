@@ -1,0 +1,52 @@
+#include "kernel/energy/crease_spring_states.hpp"
+
+#include <Eigen/SparseCore>
+#include <string>
+
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/energy/crease_energy.hpp"
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+
+namespace rigidfold {
+
+CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topology& topology,
+                                        const CreaseSpringProblem& problem) {
+  const int starts = problem.search.random_starts;
+  if (starts < 0 || starts > kMaxSpringStateStarts)
+    throw InputError("starts", "must be between 0 and " + std::to_string(kMaxSpringStateStarts));
+  const ClosureSystem system(pattern, topology);
+  if (system.num_unknowns() > kMaxSpringStateFreeCreases)
+    throw InputError("pattern", std::to_string(system.num_unknowns()) + " free creases; the energy search takes at most " +
+                                    std::to_string(kMaxSpringStateFreeCreases));
+  const Eigen::VectorXd stiffness = stiffness_by_assignment(pattern, problem.stiffness);
+  if (problem.rest.size() != pattern.num_edges())
+    throw InputError(problem.rest_place, "has " + std::to_string(problem.rest.size()) + " angles; the pattern has " +
+                                             std::to_string(pattern.num_edges()) + " edges");
+  CreaseSprings springs;
+  try {
+    springs = make_crease_springs(pattern, stiffness, problem.rest);
+  } catch (const InputError& e) {
+    throw InputError(problem.rest_place, e.what());  // e.what() names the angle
+  }
+
+  CreaseSpringStates out;
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  system.evaluate(system.unknowns_from_edges(problem.rest), r, J);
+  out.rest_closure_residual = r.size() ? r.lpNorm<Eigen::Infinity>() : 0.0;
+  if (!(out.rest_closure_residual <= kRestClosureTolerance)) {
+    Eigen::Index row = 0;
+    if (r.size()) r.cwiseAbs().maxCoeff(&row);
+    throw InputError(problem.rest_place, "the rest state does not close: loop-closure residual " +
+                                             std::to_string(out.rest_closure_residual) + " rad (row " + std::to_string(row) +
+                                             ", allowed " + std::to_string(kRestClosureTolerance) + ")");
+  }
+  out.search = search_stable_states(pattern, topology, system, springs, problem.rest, problem.search);
+  if (out.search.states.empty())
+    throw NoAnswerError("no stable state reached from " + std::to_string(out.search.starts) + " starts (" +
+                        std::to_string(out.search.starts_converged) + " minimisations converged)");
+  return out;
+}
+
+}  // namespace rigidfold

@@ -1,0 +1,46 @@
+#pragma once
+// The stable states of a crease pattern with torsional springs at its creases: the one kernel
+// entry behind `rigidfold energy` and the Python rigidfold.stable_states (issue 14 item 2).
+// It checks the problem (size, stiffnesses, rest state), then runs the multistart search of
+// stable_state_search.hpp on the loop-closure manifold with no symmetry imposed.
+//
+// Units: radians; stiffness in energy per rad^2; energy in the stiffness unit times rad^2.
+#include <Eigen/Core>
+#include <string>
+
+#include "kernel/energy/crease_stiffness.hpp"
+#include "kernel/energy/stable_state_search.hpp"
+#include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
+
+namespace rigidfold {
+
+// Free creases the search takes at most: its tangent-space steps are dense
+// (constrained_equilibrium.hpp).
+inline constexpr int kMaxSpringStateFreeCreases = 400;
+// A rest state must close to this loop-closure residual (radians): one read from a file with
+// decimals closes to ~1e-12; one that misses by more is not a state of this pattern.
+inline constexpr double kRestClosureTolerance = 1e-6;
+// Random starts the search takes at most (besides the rest state).
+inline constexpr int kMaxSpringStateStarts = 1000;
+
+struct CreaseSpringProblem {
+  StiffnessByAssignment stiffness;   // per letter, >= 0
+  Eigen::VectorXd rest;              // per edge, radians (FOLD sign): the springs' rest state
+  std::string rest_place = "rest";   // named when the rest state is bad (the CLI passes its file)
+  StableStateSearchOptions search;   // random_starts in [0, kMaxSpringStateStarts], seed
+};
+
+struct CreaseSpringStates {
+  double rest_closure_residual = 0.0;  // ||r(rest)||_inf, radians (<= kRestClosureTolerance)
+  StableStateSearch search;            // states in increasing energy, each checked (see there)
+};
+
+// Throws InputError naming the place: "pattern" (more than kMaxSpringStateFreeCreases free
+// creases), "stiffness.mountain" / ".valley" / ".unassigned", "starts", rest_place (a rest
+// state that does not close, with its residual and row; wrong size or range);
+// NoAnswerError when no start reaches a stable state.
+CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topology& topology,
+                                        const CreaseSpringProblem& problem);
+
+}  // namespace rigidfold

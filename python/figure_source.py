@@ -1,0 +1,35 @@
+"""Every figure names its input (issue 18 item 4): a small grey line at the foot of the figure
+with the files it was drawn from and the rigidfold version that wrote them where known.
+
+Used by the python/plot_*.py scripts: ``stamp_inputs(fig, [path, ...], version=None)`` before
+``fig.savefig``. Paths are shown relative to the working directory when below it.
+"""
+import json
+import os
+
+
+def _shown(path):
+    path = os.fspath(path)
+    rel = os.path.relpath(path) if os.path.isabs(path) else path
+    return path if rel.startswith("..") else rel
+
+
+def version_of(json_path):
+    """The "rigidfold_version" (and commit) in a JSON output's provenance, or None."""
+    try:
+        with open(json_path) as f:
+            p = json.load(f).get("provenance", {})
+    except (OSError, ValueError, AttributeError):
+        return None
+    if "rigidfold_version" not in p:
+        return None
+    return f"rigidfold {p['rigidfold_version']} ({p.get('rigidfold_commit', '?')})"
+
+
+def stamp_inputs(fig, paths, version=None):
+    text = "input: " + ", ".join(_shown(p) for p in paths)
+    if version:
+        text += f"  |  {version}"
+    if len(text) > 220:  # many trace files: keep the line on the figure
+        text = text[:217] + "..."
+    fig.text(0.005, 0.003, text, fontsize=6, color="0.45", ha="left", va="bottom")
