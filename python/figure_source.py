@@ -27,9 +27,9 @@ def version_of(json_path):
 
 
 def stamp_inputs(fig, paths, version=None):
-    text = "input: " + ", ".join(_shown(p) for p in paths)
-    if version:
-        text += f"  |  {version}"
-    if len(text) > 220:  # many trace files: keep the line on the figure
-        text = text[:217] + "..."
+    shown = [_shown(p) for p in paths]
+    if len(shown) > 3:  # many trace files: name the first ones and where the rest are
+        folders = sorted({os.path.dirname(p) or "." for p in shown[2:]})
+        shown = shown[:2] + [f"and {len(paths) - 2} more in {', '.join(folders)}"]
+    text = ("" if not version else f"{version}  |  ") + "input: " + ", ".join(shown)
     fig.text(0.005, 0.003, text, fontsize=6, color="0.45", ha="left", va="bottom")
