@@ -11,24 +11,7 @@ packages=(
   libboost-dev libfcl-dev libspectra-dev libexpat1-dev clang libclang-rt-14-dev
 )
 
-# The browser viewer's needs (Debian chromium, node/npm, npm ci in viewer/): its own script.
+bash "$(dirname "$0")/install_missing_packages.sh" bootstrap "${packages[@]}"
+
+# The browser viewer's needs (Debian chromium, node/npm if missing, npm ci in viewer/).
 bash "$(dirname "$0")/../viewer/bootstrap_viewer.sh"
-
-missing=()
-for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
-fi
-
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "bootstrap: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq >/dev/null
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-echo "bootstrap: done"
