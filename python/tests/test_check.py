@@ -1,8 +1,10 @@
 """check(): the kernel's verdict, equal to what `rigidfold check --json` prints."""
+import os
+
 import pytest
 
 import rigidfold
-from conftest import bundled
+from conftest import SOURCE_DIR, bundled
 
 TIMING_KEYS = {"seconds", "exploration_seconds"}
 
@@ -29,13 +31,11 @@ def test_corrugated_p_is_foldable_with_one_dof(cli):
     assert r["reason"] == expected["reason"]
 
 
-@pytest.mark.parametrize("name,use_assignment", [
-    ("corrugated_p_rigid.fold", True),
-    ("corrugated_q_rigid.fold", False),
-    ("square_twist_30_type1.fold", True),
-    ("square_twist_30_type2m.fold", True),
-    ("miura_3x3_perturbed.fold", True),
-])
+BUNDLED_NAMES = sorted(n for n in os.listdir(os.path.join(SOURCE_DIR, "data", "bundled")) if n.endswith(".fold"))
+
+
+@pytest.mark.parametrize("use_assignment", [True, False])
+@pytest.mark.parametrize("name", BUNDLED_NAMES)
 def test_check_equals_the_cli_bit_for_bit(cli, name, use_assignment):
     path = bundled(name)
     r = rigidfold.check(rigidfold.load(path), use_assignment=use_assignment, source=path)

@@ -52,7 +52,12 @@ def test_trace_bad_drive_raises_input_error():
     assert info.value.place == "drive"
 
 
-@pytest.mark.parametrize("name", ["miura_4x4_alpha60.fold", "square_twist_30_type2m.fold"])
+# Every bundled pattern with one motion from flat to trace (the others: no rigid motion with
+# their letters, several DOF, or a sheet with holes traced both ways from its given state).
+@pytest.mark.parametrize("name", ["corrugated_p_rigid.fold", "corrugated_q_rigid.fold", "miura_12x12_folded.fold",
+                                  "miura_4x4_alpha60.fold", "square_twist_30_type1m.fold",
+                                  "square_twist_30_type2m.fold", "square_twist_30_type3.fold",
+                                  "square_twist_30_type4.fold"])
 def test_trace_equals_the_cli_csv_bit_for_bit(tmp_path, name):
     import csv
     import subprocess
