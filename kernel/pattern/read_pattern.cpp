@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/opx_reader.hpp"
 #include "kernel/pattern/svg_reader.hpp"
 
 namespace rigidfold {
@@ -15,6 +16,10 @@ bool is_svg_path(const std::string& path) {
   return ext == ".svg";
 }
 
-CreasePattern read_pattern(const std::string& path) { return is_svg_path(path) ? read_svg(path) : read_fold(path); }
+CreasePattern read_pattern(const std::string& path) {
+  if (is_svg_path(path)) return read_svg(path);
+  if (is_opx_path(path)) return read_opx(path);
+  return read_fold(path);
+}
 
 }  // namespace rigidfold

@@ -1,8 +1,8 @@
 #pragma once
 // read_pattern: the one loader of crease-pattern files for the commands that take a pattern
-// (info, check, trace). By extension, case-insensitive: ".svg" is read as an SVG crease
-// pattern in Origami Simulator's colours (svg_reader.hpp, default merge tolerance), anything
-// else as FOLD (fold_io.hpp).
+// (info, check, trace, ...). By extension, case-insensitive: ".svg" is read as an SVG crease
+// pattern in Origami Simulator's colours (svg_reader.hpp, default merge tolerance), ".opx" as
+// an ORIPA file (opx_reader.hpp, the same arrangement), anything else as FOLD (fold_io.hpp).
 //   Output: the validated CreasePattern (faces derived when the file has none).
 //   Throws: InputError naming the file and the place in it.
 #include <string>

@@ -123,6 +123,22 @@ TEST_F(ExportCli, ImportReadsAnOripaOpx) {
   EXPECT_FALSE(std::filesystem::exists(file("bad.fold")));
 }
 
+// info, check and trace read an .opx directly (kernel/pattern/read_pattern.hpp), as they read an
+// SVG: the same verdict as on the FOLD that `import` writes.
+TEST_F(ExportCli, CheckReadsAnOripaOpxDirectly) {
+  const std::string opx = std::string(RIGIDFOLD_SOURCE_DIR) + "/tests/data/opx/miura_unit.opx", fold = file("m.fold");
+  ASSERT_EQ(test::run_command(test::cli() + " import " + opx + " --out " + fold).status, 0);
+  const auto direct = test::run_command(test::cli() + " check " + opx + " --json");
+  const auto imported = test::run_command(test::cli() + " check " + fold + " --json");
+  ASSERT_EQ(direct.status, 0) << direct.err;
+  ASSERT_EQ(imported.status, 0) << imported.err;
+  const auto a = nlohmann::json::parse(direct.out), b = nlohmann::json::parse(imported.out);
+  EXPECT_EQ(a["file"], opx);
+  // The file's letters MMMV put the odd crease where its sectors do not allow: a proof of no motion.
+  EXPECT_EQ(a["verdict_class"], "not foldable (proof)");
+  for (const char* key : {"verdict_class", "dof", "model", "reason", "obstruction"}) EXPECT_EQ(a[key], b[key]) << key;
+}
+
 TEST_F(ExportCli, FoldWritesAnStlWithTheOtherOutputs) {
   const std::string angles = file("a.json"), out = file("f.fold"), stl = file("f.stl");
   std::ofstream(angles) << "{}";
