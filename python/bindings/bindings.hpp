@@ -19,6 +19,7 @@ void bind_energy(py::module_& m);    // stable states of any pattern with crease
 void bind_thick(py::module_& m);     // thick-panel vertices (seed 003 ch. 4)
 void bind_sorce(py::module_& m);     // SORCE rolling joints (seed 002)
 void bind_metamaterial(py::module_& m);  // square-twist metamaterial unit (seed 003 3.3.2)
+void bind_formats(py::module_& m);   // SVG and DXF text of a crease pattern
 
 // A JSON value as plain Python objects (dict, list, float, int, str, bool, None), through the
 // standard json module so that numbers keep their exact values.

@@ -57,4 +57,5 @@ PYBIND11_MODULE(_core, m) {
   bind_thick(m);
   bind_sorce(m);
   bind_metamaterial(m);
+  bind_formats(m);
 }

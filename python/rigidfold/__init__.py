@@ -6,7 +6,7 @@ Units and signs are the kernel's: fold angles and sector angles in radians, FOLD
 (valley > 0, mountain < 0, 0 flat); lengths in the pattern file's units. Dict keys ending in
 ``_deg`` (in the objects ``check`` returns, which are the CLI's JSON) are degrees.
 
-Patterns:   load, parse_fold, save, CreasePattern (.vertices, .edges, .assignments, .faces,
+Patterns:   load (.fold, .svg, .opx), parse_fold, save, svg_text, dxf_text, CreasePattern (.vertices, .edges, .assignments, .faces,
             .fold_angles), bundled_examples, miura_ori, miura_fold_angles, square_twist,
             waterbomb_base, corrugated_unit
 Analysis:   check, trace, enumerate_assignments
@@ -33,6 +33,7 @@ from rigidfold._core import (
     corrugated_unit,
     CreasePattern,
     design_string_from_curve,
+    dxf_text,
     enumerate_assignments,
     flat_fold_angles,
     flat_fold_multipliers,
@@ -52,6 +53,7 @@ from rigidfold._core import (
     stable_states,
     string_forward,
     string_pattern,
+    svg_text,
     thick_bennett_vertex,
     thick_diamond_vertex,
     thick_myard_vertex,
