@@ -25,5 +25,6 @@ void add_export_command(CLI::App& app);   // rigidfold export P.fold --svg P.svg
 void add_assignments_command(CLI::App& app);  // rigidfold assignments PATTERN [--json] [--list N]
 void add_energy_command(CLI::App& app);  // rigidfold energy PATTERN --rest REST [--k-m K --k-v K] [--json]
 void add_waterbomb_command(CLI::App& app);  // rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
+void add_thick_command(CLI::App& app);  // rigidfold thick PATTERN --thickness T [--hinges top|bottom|mid|valley|bennett] [--json] [--out THICK.fold] [--stl F.stl --at DEG]
 
 }  // namespace rigidfold::cli

@@ -3,7 +3,7 @@
 //   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check + flags
+//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check|thick + flags
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
 // error", an exception that is not bad input) aborts, so libFuzzer reports it with the
 // input, like a crash.
@@ -36,6 +36,9 @@ const std::string kPattern = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/
 // The bundled waterbomb base and its rest state, for the energy command's flags.
 const std::string kWaterbomb = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold";
 const std::string kWaterbombRest = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/energy/waterbomb_base_rest60.json";
+// A flat-foldable Miura-ori, for the thick command's flags (no uniform Bennett heights: the
+// default --hinges bennett exits 2 naming the crease; top, bottom, mid and valley run).
+const std::string kMiura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_4x4_alpha60.fold";
 
 // The private temporary directory every run writes in (created once). The flags target
 // also makes it the working directory, so that the relative paths its tokens may name stay
@@ -70,7 +73,7 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"rigidfold"};
   if (size == 0) return args;
-  switch (data[0] % 8) {
+  switch (data[0] % 9) {
     case 0: args.insert(args.end(), {"generate"}); break;
     case 1: args.insert(args.end(), {"trace", kPattern}); break;
     case 2: args.insert(args.end(), {"trace", kPattern, "--general"}); break;
@@ -78,6 +81,7 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     case 4: args.insert(args.end(), {"waterbomb"}); break;
     case 5: args.insert(args.end(), {"assignments", kPattern}); break;
     case 6: args.insert(args.end(), {"energy", kWaterbomb, "--rest", kWaterbombRest}); break;
+    case 8: args.insert(args.end(), {"thick", kMiura}); break;
     default: args.insert(args.end(), {"check", kPattern}); break;
   }
   std::string token;

@@ -166,4 +166,43 @@ std::string folded_stl(const CreasePattern& pattern, const FoldedGeometry& folde
   return out;
 }
 
+std::string polygons_stl(const std::vector<std::vector<Eigen::Vector3d>>& polygons, int length_exponent,
+                         const std::string& title) {
+  CreasePattern carrier;  // one polygon at a time, so triangulate_face does the work
+  carrier.coords_2d = false;
+  carrier.length_exponent = length_exponent;
+  std::vector<std::array<Eigen::Vector3d, 3>> triangles;
+  std::vector<Eigen::Vector3d> normals;
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    carrier.vertices = polygons[k];
+    std::vector<int> face(polygons[k].size());
+    for (std::size_t i = 0; i < face.size(); ++i) face[i] = static_cast<int>(i);
+    std::vector<std::array<int, 3>> t;
+    try {
+      t = triangulate_face(carrier, face);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("STL: polygon " + std::to_string(k) + ": " + e.what());
+    }
+    const Eigen::Vector3d normal = newell_normal(carrier, face).normalized();
+    for (const auto& tri : t) {
+      triangles.push_back({to_file_units(carrier, polygons[k][tri[0]]), to_file_units(carrier, polygons[k][tri[1]]),
+                           to_file_units(carrier, polygons[k][tri[2]])});
+      normals.push_back(normal);
+    }
+  }
+  if (triangles.size() >= (std::size_t{1} << 32)) throw std::invalid_argument("STL: 2^32 triangles or more");
+  std::string out(80, ' ');
+  out.replace(0, std::min<std::size_t>(title.size(), 80), title.substr(0, 80));
+  out.reserve(84 + 50 * triangles.size());
+  put_u32(out, static_cast<std::uint32_t>(triangles.size()));
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    for (int i = 0; i < 3; ++i) put_f32(out, normals[k][i]);
+    for (const Eigen::Vector3d& x : triangles[k])
+      for (int i = 0; i < 3; ++i) put_f32(out, x[i]);
+    out += '\0';
+    out += '\0';
+  }
+  return out;
+}
+
 }  // namespace rigidfold

@@ -31,6 +31,15 @@ std::string folded_obj(const CreasePattern& pattern, const FoldedGeometry& folde
 // cannot be triangulated (a face that crosses itself) or there are 2^32 triangles or more.
 std::string folded_stl(const CreasePattern& pattern, const FoldedGeometry& folded);
 
+// Binary STL (same layout as folded_stl) of planar 3D polygons given by their points
+// (length units of a pattern with that length_exponent; written in file units), each
+// triangulated by triangulate_face and wound counter-clockwise about its Newell normal, which
+// is the facet normal written. For solids built of polygons (thick panels as slabs,
+// kernel/thick/thick_slabs.hpp). Throws std::invalid_argument naming the polygon when one
+// cannot be triangulated.
+std::string polygons_stl(const std::vector<std::vector<Eigen::Vector3d>>& polygons, int length_exponent,
+                         const std::string& title);
+
 // Ear-clipping triangulation of one face in its reference plane: triangles as vertex
 // indices of the pattern, each counter-clockwise about the face's Newell normal.
 std::vector<std::array<int, 3>> triangulate_face(const CreasePattern& pattern, const std::vector<int>& face);

@@ -1,0 +1,222 @@
+// rigidfold thick PATTERN.fold|.svg --thickness T [--hinges top|bottom|mid|valley|bennett] [--json]
+//                 [--out THICK.fold] [--stl FOLDED.stl --at DEG]
+// The thick-panel kernel's front door (kernel/thick/thick_report.hpp): the pattern's panels
+// as slabs of thickness T (file units), hinges placed as asked, mobility at the flat state
+// (DOF, locked vertices, vertices off the zero-thickness motion) and, when it moves, a
+// short trace from flat compared with the zero-thickness motion (first branch of
+// trace_motion, up to 90 deg of its driving crease). Every state printed closes to 1e-10.
+//
+// --out writes the thick sheet (thick_sheet_from_hinge_heights: vertices truncated into
+// holes, hinge edges 0..E-1 at their heights, 3D) as FOLD with two extension keys:
+//   "rigidfold:thickness":      one number per face of the sheet, its panel's slab thickness
+//                               (top - bottom, file units; kernel/thick/thick_slabs.hpp);
+//   "rigidfold:hinge_heights":  one entry per edge of the sheet: the height (z at the flat
+//                               state, file units) of the hinge of edges 0..E-1 (the input's
+//                               edges, same order), null for the cut edges after them.
+// --stl writes the panels as closed slabs at the state where the driving crease is at --at
+// degrees on the traced thick motion (binary STL, kernel/geometry/folded_output.hpp).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "app/number_flags.hpp"
+#include "app/provenance.hpp"
+#include "app/summary_stream.hpp"
+#include "kernel/geometry/folded_output.hpp"
+#include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/length_scale.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/pattern/output_set.hpp"
+#include "kernel/pattern/read_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/thick/thick_report.hpp"
+#include "kernel/thick/thick_slabs.hpp"
+
+namespace rigidfold::cli {
+
+namespace {
+
+ThickHinges parse_hinges(const std::string& text) {
+  if (text == "top") return ThickHinges::kTop;
+  if (text == "bottom") return ThickHinges::kBottom;
+  if (text == "mid") return ThickHinges::kMid;
+  if (text == "valley") return ThickHinges::kValley;
+  if (text == "bennett") return ThickHinges::kBennett;
+  throw InputError("--hinges", "'" + text + "' is not one of top, bottom, mid, valley, bennett");
+}
+
+nlohmann::ordered_json fold_angles_deg(const Eigen::VectorXd& rho) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (Eigen::Index e = 0; e < rho.size(); ++e) a.push_back(to_degrees(rho[e]));
+  return a;
+}
+
+}  // namespace
+
+void add_thick_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("thick", "Thick panels: hinge placement, mobility, locked vertices, trace against zero thickness");
+  struct Args {
+    std::string pattern, hinges = "bennett", out, stl;
+    double thickness = 0, at = 0;
+    bool json = false;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
+  cmd->add_option("--thickness", a->thickness, "panel thickness (> 0, the pattern's length units)")->required()->check(finite_number());
+  cmd->add_option("--hinges", a->hinges,
+                  "hinge placement: top, bottom or mid (every hinge on that face), valley (on the face each crease folds towards: "
+                  "top for V, bottom for M), bennett (Bennett heights that keep the zero-thickness motion; default)");
+  cmd->add_option("--out", a->out, "write the thick sheet as FOLD (rigidfold:thickness per face, rigidfold:hinge_heights per edge)");
+  auto* stl = cmd->add_option("--stl", a->stl, "write the panels as closed slabs at --at as binary STL");
+  auto* at = cmd->add_option("--at", a->at, "driving crease's fold angle for --stl (degrees, within the traced thick motion)")
+                 ->check(finite_in(-180, 180, "degrees"));
+  stl->needs(at);
+  at->needs(stl);
+  cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
+  cmd->callback([a] {
+    if (!(a->thickness > 0)) throw InputError("--thickness", "must be > 0");
+    const ThickHinges hinges = parse_hinges(a->hinges);
+    OutputSet outputs;
+    outputs.add_input("PATTERN", a->pattern);
+    if (!a->out.empty()) outputs.add_output("--out", a->out);
+    if (!a->stl.empty()) outputs.add_output("--stl", a->stl);
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
+    const CreasePattern p = read_pattern(a->pattern);
+    const Topology t = build_topology(p, a->pattern);
+    if (t.interior_vertices.empty()) throw InputError(a->pattern, "no interior vertex: nothing for thickness to change");
+
+    ThickReportRequest request;
+    request.thickness = std::ldexp(a->thickness, -p.length_exponent);  // file units -> the pattern's internal units
+    Eigen::Vector3d lo = p.vertices[0], hi = p.vertices[0];
+    for (const Eigen::Vector3d& v : p.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    if (!(request.thickness <= (hi - lo).norm())) {
+      char m[160];
+      std::snprintf(m, sizeof m, "must be at most the pattern's diagonal, %.17g", to_file_units(p, (hi - lo).norm()));
+      throw InputError("--thickness", m);
+    }
+    request.hinges = hinges;
+    request.zero = zero_thickness_samples(p, t);
+    ThickReport r;
+    try {
+      r = thick_report(p, t, request);
+    } catch (const InputError& e) {
+      const std::string what = std::string(e.what()).substr(e.place().size() + 2);
+      if (e.place() == "thickness") throw InputError("--thickness", what);
+      if (e.place() == "hinges") throw InputError("--hinges", what);
+      throw;
+    }
+    const std::vector<PanelSlab> slabs = panel_slabs(p, t, r);
+
+    nlohmann::ordered_json j;
+    j["file"] = a->pattern;
+    j["thickness"] = a->thickness;
+    j["hinges"] = to_string(hinges);
+    nlohmann::ordered_json heights = nlohmann::ordered_json::array();
+    for (double h : r.edge_heights) heights.push_back(to_file_units(p, h));
+    j["hinge_heights"] = heights;
+    const ThickMobilityReport& m = r.mobility;
+    nlohmann::ordered_json mob;
+    mob["dof"] = m.dof;
+    mob["rank_cut"] = m.rank.threshold;
+    mob["smallest_kept_singular_value"] = m.rank.sigma_kept;
+    mob["largest_dropped_singular_value"] = m.rank.sigma_dropped;
+    mob["flat_state_residual"] = m.state_residual;
+    mob["locked_vertices"] = m.locked_vertices;
+    mob["off_motion_vertices"] = m.off_motion_vertices;
+    nlohmann::ordered_json vertices = nlohmann::ordered_json::array();
+    for (const ThickVertexMobility& v : m.vertices)
+      vertices.push_back({{"vertex", v.vertex}, {"creases", v.creases}, {"dof_alone", v.dof_alone}, {"off_motion_residual", v.off_motion}});
+    mob["vertices"] = vertices;
+    j["flat_state"] = mob;
+    nlohmann::ordered_json zero;
+    zero["driving_crease"] = request.zero.drive;
+    zero["states"] = request.zero.states.size();
+    zero["max_residual"] = request.zero.max_residual;
+    if (!request.zero.note.empty()) zero["note"] = request.zero.note;
+    j["zero_thickness"] = zero;
+    nlohmann::ordered_json trace;
+    trace["driving_crease"] = r.drive;
+    trace["max_deviation_rad"] = r.max_deviation;
+    trace["max_residual"] = r.max_trace_residual;
+    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+    for (const ThickTraceStep& s : r.trace)
+      steps.push_back({{"drive_deg", to_degrees(s.drive)},
+                       {"residual", s.residual},
+                       {"deviation_rad", s.deviation},
+                       {"worst_edge", s.worst_edge},
+                       {"dof", s.dof},
+                       {"fold_angles_deg", fold_angles_deg(s.rho)}});
+    trace["steps"] = steps;
+    if (!r.trace_note.empty()) trace["note"] = r.trace_note;
+    j["trace"] = trace;
+
+    if (!a->out.empty()) {
+      nlohmann::ordered_json doc = fold_to_json(r.sheet.pattern);
+      nlohmann::ordered_json per_face = nlohmann::ordered_json::array();
+      for (int f : r.sheet.flat_face_of_face) per_face.push_back(to_file_units(p, slabs[f].top - slabs[f].bottom));
+      doc["rigidfold:thickness"] = per_face;
+      nlohmann::ordered_json per_edge = nlohmann::ordered_json::array();
+      for (int e = 0; e < r.sheet.pattern.num_edges(); ++e)
+        per_edge.push_back(e < p.num_edges() ? nlohmann::ordered_json(to_file_units(p, r.edge_heights[e])) : nlohmann::ordered_json());
+      doc["rigidfold:hinge_heights"] = per_edge;
+      outputs.stage(a->out, dump_fold_json(doc));
+      j["out"] = a->out;
+    }
+    if (!a->stl.empty()) {
+      ThickTraceStep state;
+      try {
+        state = thick_state_at(r, to_radians(a->at));
+      } catch (const InputError& e) {
+        throw InputError("--at", std::string(e.what()).substr(e.place().size() + 2));
+      }
+      const FoldedGeometry placed = place_thick_sheet(r, state.rho);
+      if (!(placed.relative_mismatch() <= 1e-9)) {
+        char m[200];
+        std::snprintf(m, sizeof m, "the thick sheet placed at %.9g deg leaves cracks of %.3g of its size (> 1e-9)", a->at,
+                      placed.relative_mismatch());
+        throw NoAnswerError(m, placed.relative_mismatch());
+      }
+      outputs.stage(a->stl, polygons_stl(slab_polygons(p, r, slabs, placed), p.length_exponent, "rigidfold thick panels (binary STL)"));
+      nlohmann::ordered_json s;
+      s["file"] = a->stl;
+      s["drive_deg"] = a->at;
+      s["residual"] = state.residual;
+      s["relative_mismatch"] = placed.relative_mismatch();
+      s["dof"] = state.dof;
+      s["fold_angles_deg"] = fold_angles_deg(state.rho);
+      j["stl"] = s;
+    }
+    outputs.commit();
+
+    if (a->json) {
+      std::cout << with_provenance(j).dump(2) << "\n";
+      return;
+    }
+    char line[320];
+    std::snprintf(line, sizeof line, "%s: thickness %.9g, hinges %s\n", a->pattern.c_str(), a->thickness, to_string(hinges));
+    std::cout << line;
+    std::snprintf(line, sizeof line, "  flat state: DOF %d (smallest kept singular value %.3g, cut %.3g), %zu locked vertex(es), %zu off the zero-thickness motion\n",
+                  m.dof, m.rank.sigma_kept, m.rank.threshold, m.locked_vertices.size(), m.off_motion_vertices.size());
+    std::cout << line;
+    for (const ThickVertexMobility& v : m.vertices)
+      if (v.dof_alone == 0 || v.off_motion > request.closure_tolerance) {
+        std::snprintf(line, sizeof line, "    vertex %d: %s, off the zero-thickness motion by %.3g\n", v.vertex,
+                      v.dof_alone == 0 ? "locked alone" : "mobile alone", v.off_motion);
+        std::cout << line;
+      }
+    if (!r.trace.empty()) {
+      std::snprintf(line, sizeof line, "  trace: crease %d to %.6g deg in %zu steps, largest |rho_thick - rho_zero| %.3g rad, closure <= %.3g rad\n",
+                    r.drive, to_degrees(r.trace.back().drive), r.trace.size(), r.max_deviation, r.max_trace_residual);
+      std::cout << line;
+    }
+    if (!r.trace_note.empty()) std::cout << "  " << r.trace_note << "\n";
+    if (!a->out.empty()) std::cout << "  thick sheet written to " << a->out << "\n";
+    if (!a->stl.empty()) std::cout << "  slabs at " << a->at << " deg written to " << a->stl << "\n";
+  });
+}
+
+}  // namespace rigidfold::cli

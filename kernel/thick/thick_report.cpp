@@ -1,0 +1,249 @@
+#include "kernel/thick/thick_report.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "kernel/analysis/trace_motion.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/solve/newton_projection.hpp"
+#include "kernel/solve/rank.hpp"
+#include "kernel/thick/bennett_heights.hpp"
+
+namespace rigidfold {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::vector<double> placement_heights(const CreasePattern& flat, const Topology& topology, double t, ThickHinges hinges) {
+  std::vector<double> h(flat.num_edges(), 0.0);
+  for (int e = 0; e < flat.num_edges(); ++e) {
+    switch (hinges) {
+      case ThickHinges::kTop: h[e] = hinge_height(0.0, t, HingePlacement::kTop); break;
+      case ThickHinges::kBottom: h[e] = hinge_height(0.0, t, HingePlacement::kBottom); break;
+      case ThickHinges::kMid: h[e] = hinge_height(0.0, t, HingePlacement::kMid); break;
+      case ThickHinges::kValley:
+        if (!topology.edge_is_hinge[e]) break;
+        if (flat.assignments[e] == Assignment::Valley) h[e] = hinge_height(0.0, t, HingePlacement::kTop);
+        else if (flat.assignments[e] == Assignment::Mountain) h[e] = hinge_height(0.0, t, HingePlacement::kBottom);
+        else throw InputError("hinges", "valley placement needs an M or V letter on every crease; edge " + std::to_string(e) + " has none");
+        break;
+      case ThickHinges::kBennett: break;
+    }
+  }
+  return h;
+}
+
+// Largest wrapped |a - b| over the entries, and where.
+double largest_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b, int& where) {
+  double worst = 0.0;
+  where = -1;
+  for (Eigen::Index e = 0; e < a.size(); ++e) {
+    const double d = std::abs(std::remainder(a[e] - b[e], 2 * kPi));
+    if (d > worst || where < 0) {
+      worst = d;
+      where = static_cast<int>(e);
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+const char* to_string(ThickHinges hinges) {
+  switch (hinges) {
+    case ThickHinges::kTop: return "top";
+    case ThickHinges::kBottom: return "bottom";
+    case ThickHinges::kMid: return "mid";
+    case ThickHinges::kValley: return "valley";
+    case ThickHinges::kBennett: return "bennett";
+  }
+  return "?";
+}
+
+ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Topology& topology, int steps, double max_drive) {
+  ZeroThicknessSamples out;
+  TraceRequest request;
+  request.steps = steps;
+  const MotionTrace trace = trace_motion(flat, topology, request);
+  if (trace.branches.empty()) {
+    out.note = trace.note.empty() ? "the zero-thickness pattern has no motion to trace" : trace.note;
+    return out;
+  }
+  const MotionBranch& branch = trace.branches[0];
+  out.drive = branch.drive;
+  if (!branch.traced) {
+    out.note = "the zero-thickness motion was not traced: " + branch.message;
+    return out;
+  }
+  for (const MotionStep& step : branch.steps) {
+    if (!(std::abs(step.drive) <= max_drive)) break;
+    if (step.drive == 0.0) continue;
+    if (!(step.residual <= 1e-10)) break;  // a state that does not pass its own check ends the samples
+    out.drive_angles.push_back(step.drive);
+    out.states.push_back(step.rho);
+    out.max_residual = std::max(out.max_residual, step.residual);
+  }
+  if (out.states.empty()) out.note = "the zero-thickness trace has no state closed to 1e-10 rad within the drive range";
+  return out;
+}
+
+ThickReport thick_report(const CreasePattern& flat, const Topology& topology, const ThickReportRequest& request) {
+  if (!std::isfinite(request.thickness) || !(request.thickness > 0))
+    throw InputError("thickness", "must be a finite number > 0");
+  ThickReport report;
+  report.thickness = request.thickness;
+  report.hinges = request.hinges;
+  const ZeroThicknessSamples& zero = request.zero;
+  if (request.hinges == ThickHinges::kBennett) {
+    if (zero.states.empty())
+      throw InputError("hinges", "bennett needs a folded zero-thickness state to pick each vertex's staircase, and there is none (" +
+                                     zero.note + ")");
+    // The most folded sample: Bennett start creases are told apart best away from flat.
+    try {
+      report.edge_heights = bennett_hinge_heights(flat, topology, zero.states.back(), request.thickness);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("hinges", std::string("no Bennett hinge heights: ") + e.what());
+    }
+  } else {
+    report.edge_heights = placement_heights(flat, topology, request.thickness, request.hinges);
+  }
+  report.sheet = thick_sheet_from_hinge_heights(flat, topology, report.edge_heights);
+  const Eigen::VectorXd flat_state = Eigen::VectorXd::Zero(flat.num_edges());
+  report.mobility = thick_mobility(report.sheet, flat_state, zero.states, request.closure_tolerance);
+  report.drive = zero.drive;
+
+  if (report.mobility.dof < 1) {
+    report.trace_note = "DOF 0 at the flat state (a regular point when the smallest kept singular value is well above the cut): the thick sheet does not fold";
+    return report;
+  }
+  if (zero.states.empty()) {
+    report.trace_note = "no zero-thickness states to drive and compare with" + (zero.note.empty() ? std::string() : ": " + zero.note);
+    return report;
+  }
+
+  const ClosureSystem system(report.sheet.pattern, report.sheet.topology, report.sheet.options);
+  const int held = system.unknown_of_edge(zero.drive);
+  if (held < 0) {
+    report.trace_note = "the driving crease " + std::to_string(zero.drive) + " is not free in the thick sheet";
+    return report;
+  }
+  auto unknowns = [&](const Eigen::VectorXd& fold) { return system.unknowns_from_edges(report.sheet.sheet_edge_angles(fold)); };
+  auto folds = [&](const Eigen::VectorXd& x) { return report.sheet.fold_angles(system.edges_from_unknowns(x)); };
+  NewtonOptions newton;
+  newton.tolerance = 1e-13;
+  newton.held_unknowns = {held};
+
+  // One Newton projection with the drive held at `drive`, from thick state `from` moved by the
+  // zero-thickness increment `increment`.
+  auto project = [&](const Eigen::VectorXd& from, const Eigen::VectorXd& increment, double drive, Eigen::VectorXd& to) {
+    Eigen::VectorXd guess = from + increment;
+    guess[zero.drive] = drive;
+    const NewtonResult result = newton_project(system, unknowns(guess), newton);
+    if (!result.converged) return false;
+    to = folds(result.x);
+    return true;
+  };
+
+  Eigen::VectorXd thick = flat_state, zero_previous = flat_state;
+  double drive_previous = 0.0;
+  for (std::size_t k = 0; k < zero.states.size(); ++k) {
+    const Eigen::VectorXd& target = zero.states[k];
+    const double drive = zero.drive_angles[k];
+    // Up to 2^5 equal sub-steps between the previous state and this one.
+    bool reached = false;
+    Eigen::VectorXd next;
+    for (int pieces = 1; pieces <= 32 && !reached; pieces *= 2) {
+      Eigen::VectorXd at = thick;
+      bool ok = true;
+      for (int s = 1; s <= pieces && ok; ++s) {
+        const double fraction = static_cast<double>(s) / pieces;
+        const Eigen::VectorXd increment = (target - zero_previous) / pieces;
+        ok = project(at, increment, drive_previous + fraction * (drive - drive_previous), at);
+      }
+      if (ok) {
+        reached = true;
+        next = at;
+      }
+    }
+    if (!reached) {
+      std::ostringstream note;
+      note << "Newton projection did not reach the driving angle " << drive << " rad (from " << drive_previous << ")";
+      report.trace_note = note.str();
+      break;
+    }
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> J;
+    system.evaluate(unknowns(next), r, J);
+    ThickTraceStep step;
+    step.drive = drive;
+    step.rho = next;
+    step.residual = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
+    if (!(step.residual <= request.closure_tolerance)) {
+      std::ostringstream note;
+      note << "the state at driving angle " << drive << " rad closes only to " << step.residual << " (> "
+           << request.closure_tolerance << "); the trace ends before it";
+      report.trace_note = note.str();
+      break;
+    }
+    step.deviation = largest_difference(next, target, step.worst_edge);
+    step.dof = jacobian_rank(J).dof;
+    report.max_deviation = std::max(report.max_deviation, step.deviation);
+    report.max_trace_residual = std::max(report.max_trace_residual, step.residual);
+    report.trace.push_back(step);
+    thick = next;
+    zero_previous = target;
+    drive_previous = drive;
+  }
+  return report;
+}
+
+ThickTraceStep thick_state_at(const ThickReport& report, double drive, double closure_tolerance) {
+  if (report.trace.empty()) throw InputError("at", "there is no traced thick motion to place (" + report.trace_note + ")");
+  const double last = report.trace.back().drive;
+  if (!std::isfinite(drive) || drive * last < 0 || std::abs(drive) > std::abs(last)) {
+    std::ostringstream m;
+    m << "the driving crease " << report.drive << " is traced from 0 to " << last * 180 / kPi << " deg; " << drive * 180 / kPi
+      << " deg is outside";
+    throw InputError("at", m.str());
+  }
+  const ClosureSystem system(report.sheet.pattern, report.sheet.topology, report.sheet.options);
+  Eigen::VectorXd below = Eigen::VectorXd::Zero(report.trace.back().rho.size()), above = below;
+  double d_below = 0.0, d_above = 0.0;
+  for (const ThickTraceStep& s : report.trace) {
+    above = s.rho;
+    d_above = s.drive;
+    if (std::abs(s.drive) >= std::abs(drive)) break;
+    below = s.rho;
+    d_below = s.drive;
+  }
+  const double f = d_above == d_below ? 0.0 : (drive - d_below) / (d_above - d_below);
+  Eigen::VectorXd guess = below + f * (above - below);
+  guess[report.drive] = drive;
+  NewtonOptions newton;
+  newton.tolerance = 1e-13;
+  newton.held_unknowns = {system.unknown_of_edge(report.drive)};
+  const NewtonResult result =
+      newton_project(system, system.unknowns_from_edges(report.sheet.sheet_edge_angles(guess)), newton);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  system.evaluate(result.x, r, J);
+  ThickTraceStep step;
+  step.drive = drive;
+  step.rho = report.sheet.fold_angles(system.edges_from_unknowns(result.x));
+  step.residual = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
+  if (!(step.residual <= closure_tolerance)) {
+    std::ostringstream m;
+    m << "the thick state at driving angle " << drive * 180 / kPi << " deg closes only to " << step.residual << " rad";
+    throw NoAnswerError(m.str(), step.residual);
+  }
+  step.dof = jacobian_rank(J).dof;
+  step.deviation = std::nan("");  // no zero-thickness state at this angle
+  return step;
+}
+
+}  // namespace rigidfold

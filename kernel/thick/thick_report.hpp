@@ -1,0 +1,112 @@
+#pragma once
+// The thick-panel front door (issue 15 item 6): a flat crease pattern, one panel thickness
+// and a hinge placement in, a checked report out - the thick sheet, its mobility at the flat
+// state, and (when it moves) a short trace from flat compared with the zero-thickness motion.
+//
+// Inputs (ThickReportRequest):
+//   - a flat pattern (complete_and_validate'd, faces present) and its topology;
+//   - thickness t > 0 (pattern units, the CreasePattern's internal units); every panel is the
+//     slab [0, t] at the flat state;
+//   - the hinge placement (ThickHinges):
+//       kTop, kBottom, kMid: every hinge on the top face (z = t), the bottom face (z = 0) or
+//         the mid-plane (z = t/2). All hinges then lie in one plane, so the hinge axes of a
+//         vertex meet and the kinematics is the zero-thickness one (the slabs' volume is
+//         what differs: see the STL);
+//       kValley: each hinge on the face its crease folds towards - top for V, bottom for M
+//         (every crease at an interior vertex must be M or V). Opposite links of a
+//         degree-4 vertex then differ (t, 0, 0, t): not a Bennett, so no vertex follows the
+//         zero-thickness motion and a Miura-ori is rigid (DOF 0 at a regular flat state),
+//         though each vertex alone keeps first-order DOF 1 at its singular flat state;
+//       kBennett: the heights of bennett_heights.hpp (Bennett staircases, thickness scale t),
+//         which keep the zero-thickness motion; needs a zero-thickness folded state.
+//   - zero-thickness fold states to compare with (per flat edge, radians, FOLD sign), all on
+//     one branch driven by crease `drive`, in order of increasing |drive angle|; the thick
+//     trace is taken at their driving angles. zero_thickness_samples() makes them with
+//     trace_motion. May be empty (then no trace and no off-motion test; kBennett refuses).
+//
+// Output (ThickReport), every number checked before it is put in:
+//   - edge_heights: the hinge height of every flat edge (pattern units); the sheet
+//     (thick_sheet_from_hinge_heights, truncation 0.1);
+//   - mobility at the flat state (thick_mobility.hpp): DOF with its rank cut and smallest kept
+//     singular value, locked vertices, off-motion vertices with their residuals; the flat
+//     state closes exactly (residual 0 <= closure_tolerance, checked by thick_mobility);
+//   - when DOF >= 1 and states were given: the thick sheet traced from flat by Newton
+//     projection on its ClosureSystem with the driving crease held at each state's driving
+//     angle (predictor: the previous thick state plus the zero-thickness increment; halved
+//     steps where Newton fails). Each step kept has closure residual <= closure_tolerance
+//     (1e-10), re-evaluated after Newton; the first step that cannot be reached ends the
+//     trace (trace_note says where and why). Per step the largest |rho_thick - rho_zero|
+//     (radians, over every flat edge) and the first-order DOF there.
+//
+// Units: lengths in pattern units, angles in radians.
+// Throws InputError: place "thickness" (not finite or <= 0), "hinges" (valley placement on a
+// crease without M/V, Bennett without a folded zero-thickness state, Bennett heights that do
+// not exist for the pattern - the kernel's message names the vertex or the crease).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "kernel/pattern/crease_pattern.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/thick/hinge_heights.hpp"
+#include "kernel/thick/thick_mobility.hpp"
+
+namespace rigidfold {
+
+enum class ThickHinges { kTop, kBottom, kMid, kValley, kBennett };
+const char* to_string(ThickHinges hinges);  // "top", "bottom", "mid", "valley", "bennett"
+
+struct ZeroThicknessSamples {
+  int drive = -1;                      // driving crease (flat edge index)
+  std::vector<double> drive_angles;    // radians, |.| increasing, none 0
+  std::vector<Eigen::VectorXd> states; // per flat edge, radians; states[k][drive] == drive_angles[k]
+  double max_residual = 0.0;           // largest closure residual of the kept states (radians)
+  std::string note;                    // why there are none (empty when there are)
+};
+
+// The first branch of trace_motion (default drive and direction; the model check picks),
+// `steps` equal steps up to 170 deg, kept while |drive| <= max_drive (radians). Only states
+// whose closure residual is <= 1e-10 are kept.
+ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Topology& topology, int steps = 17,
+                                            double max_drive = 1.5707963267948966);
+
+struct ThickReportRequest {
+  double thickness = 0.0;  // > 0, pattern units
+  ThickHinges hinges = ThickHinges::kBennett;
+  ZeroThicknessSamples zero;           // may be empty
+  double closure_tolerance = 1e-10;    // every reported state closes to this (radians)
+};
+
+struct ThickTraceStep {
+  double drive = 0.0;          // driving crease's fold angle (radians)
+  Eigen::VectorXd rho;         // thick fold angles per flat edge (radians)
+  double residual = 0.0;       // closure residual ||r||_inf of the sheet there
+  double deviation = 0.0;      // max over flat edges of |rho - rho_zero| (radians, wrapped)
+  int worst_edge = -1;         // where the deviation is largest
+  int dof = -1;                // first-order DOF of the sheet there
+};
+
+struct ThickReport {
+  double thickness = 0.0;
+  ThickHinges hinges = ThickHinges::kBennett;
+  std::vector<double> edge_heights;    // per flat edge (pattern units)
+  ThickHeightSheet sheet;
+  ThickMobilityReport mobility;        // at the flat state
+  int drive = -1;
+  std::vector<ThickTraceStep> trace;   // empty when DOF 0 or no zero-thickness states
+  double max_deviation = 0.0;          // over trace (radians)
+  double max_trace_residual = 0.0;     // over trace (radians)
+  std::string trace_note;              // why there is no trace or where it ends early
+};
+
+ThickReport thick_report(const CreasePattern& flat, const Topology& topology, const ThickReportRequest& request);
+
+// The thick state with the driving crease at `drive` (radians), on the traced thick motion:
+// Newton projection (drive held) from the linear interpolation of the two trace steps (or
+// flat and the first step) that bracket it. drive must lie between 0 and the last traced
+// driving angle, same sign. The returned step has passed residual <= closure_tolerance.
+// Throws InputError(place "at") for a drive outside the traced range or no trace;
+// NoAnswerError when Newton does not reach it within the tolerance.
+ThickTraceStep thick_state_at(const ThickReport& report, double drive, double closure_tolerance = 1e-10);
+
+}  // namespace rigidfold
