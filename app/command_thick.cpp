@@ -88,6 +88,11 @@ void add_thick_command(CLI::App& app) {
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     if (t.interior_vertices.empty()) throw InputError(a->pattern, "no interior vertex: nothing for thickness to change");
+    try {
+      require_flat_pattern(p);  // before the zero-thickness trace, which would run on a folded form
+    } catch (const InputError& e) {
+      throw InputError(a->pattern, std::string(e.what()).substr(e.place().size() + 2));
+    }
 
     ThickReportRequest request;
     request.thickness = std::ldexp(a->thickness, -p.length_exponent);  // file units -> the pattern's internal units
@@ -107,6 +112,7 @@ void add_thick_command(CLI::App& app) {
       const std::string what = std::string(e.what()).substr(e.place().size() + 2);
       if (e.place() == "thickness") throw InputError("--thickness", what);
       if (e.place() == "hinges") throw InputError("--hinges", what);
+      if (e.place() == "pattern") throw InputError(a->pattern, what);
       throw;
     }
     const std::vector<PanelSlab> slabs = panel_slabs(p, t, r);

@@ -92,9 +92,22 @@ ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Top
   return out;
 }
 
+void require_flat_pattern(const CreasePattern& flat) {
+  if (flat.vertices.empty()) return;
+  Eigen::Vector3d lo = flat.vertices[0], hi = flat.vertices[0];
+  for (const Eigen::Vector3d& v : flat.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double size = (hi - lo).norm();
+  for (int v = 0; v < flat.num_vertices(); ++v)
+    if (!(std::abs(flat.vertices[v].z()) <= 1e-12 * size))
+      throw InputError("pattern", "vertex " + std::to_string(v) +
+                                      " is off the plane z = 0: thick panels need the flat crease pattern (a folded form's flat "
+                                      "development: rigidfold export)");
+}
+
 ThickReport thick_report(const CreasePattern& flat, const Topology& topology, const ThickReportRequest& request) {
   if (!std::isfinite(request.thickness) || !(request.thickness > 0))
     throw InputError("thickness", "must be a finite number > 0");
+  require_flat_pattern(flat);
   ThickReport report;
   report.thickness = request.thickness;
   report.hinges = request.hinges;

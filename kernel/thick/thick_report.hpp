@@ -39,7 +39,8 @@
 //     (radians, over every flat edge) and the first-order DOF there.
 //
 // Units: lengths in pattern units, angles in radians.
-// Throws InputError: place "thickness" (not finite or <= 0), "hinges" (valley placement on a
+// Throws InputError: place "pattern" (a vertex off z = 0: not a flat pattern), "thickness"
+// (not finite or <= 0), "hinges" (valley placement on a
 // crease without M/V, Bennett without a folded zero-thickness state, Bennett heights that do
 // not exist for the pattern - the kernel's message names the vertex or the crease).
 #include <Eigen/Core>
@@ -98,6 +99,11 @@ struct ThickReport {
   double max_trace_residual = 0.0;     // over trace (radians)
   std::string trace_note;              // why there is no trace or where it ends early
 };
+
+// The sheet is built from the pattern's xy (hinge heights become z), so a folded form would be
+// read as its projection: every vertex must lie on z = 0 (within 1e-12 of the pattern's
+// diagonal). Throws InputError(place "pattern") naming the first vertex off it.
+void require_flat_pattern(const CreasePattern& flat);
 
 ThickReport thick_report(const CreasePattern& flat, const Topology& topology, const ThickReportRequest& request);
 

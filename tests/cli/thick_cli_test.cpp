@@ -172,6 +172,7 @@ TEST(ThickCli, BadInputExitsTwoNamingThePlace) {
       {kMiura + " --thickness 1e6", "--thickness"},
       {kSource + "data/bundled/no_such_pattern.fold --thickness 0.05", "no_such_pattern.fold"},
       {kMiura + " --thickness 0.05 --hinges bogus", "--hinges"},
+      {kSource + "data/bundled/miura_tube_6_alpha60.fold --thickness 0.05 --hinges top", "miura_tube_6_alpha60.fold: vertex"},
       {copy.string() + " --thickness 0.05 --out " + copy.string(), "--out"},
       {kMiura + " --thickness 0.05 --stl " + scratch("x.stl").string(), "--at"},
       {small_miura() + " --thickness 0.05 --stl " + scratch("x.stl").string() + " --at=" + signed_deg(120), "--at"},

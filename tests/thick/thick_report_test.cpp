@@ -149,7 +149,7 @@ TEST(ThickReport, HingesOnOneFaceKeepTheZeroThicknessKinematics) {
   }
 }
 
-TEST(ThickReport, RefusesABadThicknessOrAValleyPlacementWithoutLetters) {
+TEST(ThickReport, RefusesABadThicknessAFoldedFormOrAValleyPlacementWithoutLetters) {
   const Flat flat = miura();
   for (double t : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     try {
@@ -158,6 +158,15 @@ TEST(ThickReport, RefusesABadThicknessOrAValleyPlacementWithoutLetters) {
     } catch (const InputError& e) {
       EXPECT_EQ(e.place(), "thickness");
     }
+  }
+  Flat folded = miura();
+  folded.pattern.vertices[5].z() = 0.1;
+  try {
+    report(folded, ThickHinges::kTop);
+    ADD_FAILURE() << "a pattern off z = 0 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place(), "pattern");
+    EXPECT_NE(std::string(e.what()).find("vertex 5 "), std::string::npos) << e.what();
   }
   Flat unlettered = miura();
   for (Assignment& a : unlettered.pattern.assignments)
