@@ -1,10 +1,11 @@
-// rigidfold thick PATTERN.fold|.svg --thickness T [--hinges top|bottom|mid|valley|bennett] [--json]
+// rigidfold thick PATTERN.fold|.svg --thickness T [--hinges top|bottom|mid|valley|bennett] [--reverse] [--json]
 //                 [--out THICK.fold] [--stl FOLDED.stl --at DEG]
 // The thick-panel kernel's front door (kernel/thick/thick_report.hpp): the pattern's panels
 // as slabs of thickness T (file units), hinges placed as asked, mobility at the flat state
 // (DOF, locked vertices, vertices off the zero-thickness motion) and, when it moves, a
 // short trace from flat compared with the zero-thickness motion (first branch of
-// trace_motion, up to 90 deg of its driving crease). Every state printed closes to 1e-10.
+// trace_motion, up to 90 deg of its driving crease; --reverse: traced the other way from
+// flat). Every state printed closes to 1e-10.
 //
 // --out writes the thick sheet (thick_sheet_from_hinge_heights: vertices truncated into
 // holes, hinge edges 0..E-1 at their heights, 3D) as FOLD with two extension keys:
@@ -62,7 +63,7 @@ void add_thick_command(CLI::App& app) {
   struct Args {
     std::string pattern, hinges = "bennett", out, stl;
     double thickness = 0, at = 0;
-    bool json = false;
+    bool json = false, reverse = false;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
@@ -76,6 +77,8 @@ void add_thick_command(CLI::App& app) {
                  ->check(finite_in(-180, 180, "degrees"));
   stl->needs(at);
   at->needs(stl);
+  cmd->add_flag("--reverse", a->reverse,
+                "compare with the zero-thickness motion traced the other way from flat (against the letters)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->callback([a] {
     if (!(a->thickness > 0)) throw InputError("--thickness", "must be > 0");
@@ -104,7 +107,7 @@ void add_thick_command(CLI::App& app) {
       throw InputError("--thickness", m);
     }
     request.hinges = hinges;
-    request.zero = zero_thickness_samples(p, t);
+    request.zero = zero_thickness_samples(p, t, 17, 1.5707963267948966, a->reverse);
     ThickReport r;
     try {
       r = thick_report(p, t, request);
@@ -140,6 +143,7 @@ void add_thick_command(CLI::App& app) {
     j["flat_state"] = mob;
     nlohmann::ordered_json zero;
     zero["driving_crease"] = request.zero.drive;
+    zero["direction"] = a->reverse ? "against the letters" : "the letters' way";
     zero["states"] = request.zero.states.size();
     zero["max_residual"] = request.zero.max_residual;
     if (!request.zero.note.empty()) zero["note"] = request.zero.note;

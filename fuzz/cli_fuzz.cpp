@@ -36,8 +36,7 @@ const std::string kPattern = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/
 // The bundled waterbomb base and its rest state, for the energy command's flags.
 const std::string kWaterbomb = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold";
 const std::string kWaterbombRest = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/energy/waterbomb_base_rest60.json";
-// A flat-foldable Miura-ori, for the thick command's flags (no uniform Bennett heights: the
-// default --hinges bennett exits 2 naming the crease; top, bottom, mid and valley run).
+// A flat-foldable Miura-ori, for the thick command's flags (every --hinges runs on it).
 const std::string kMiura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_4x4_alpha60.fold";
 
 // The private temporary directory every run writes in (created once). The flags target

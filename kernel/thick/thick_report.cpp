@@ -65,11 +65,18 @@ const char* to_string(ThickHinges hinges) {
   return "?";
 }
 
-ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Topology& topology, int steps, double max_drive) {
+ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Topology& topology, int steps, double max_drive,
+                                            bool reverse) {
   ZeroThicknessSamples out;
   TraceRequest request;
   request.steps = steps;
-  const MotionTrace trace = trace_motion(flat, topology, request);
+  MotionTrace trace = trace_motion(flat, topology, request);
+  if (reverse && !trace.branches.empty() && trace.branches[0].traced && !trace.branches[0].steps.empty()) {
+    const MotionBranch& forward = trace.branches[0];
+    request.drive = forward.drive;
+    request.to = (forward.to > 0 ? -1.0 : 1.0) * 170.0 * kPi / 180.0;
+    trace = trace_motion(flat, topology, request);
+  }
   if (trace.branches.empty()) {
     out.note = trace.note.empty() ? "the zero-thickness pattern has no motion to trace" : trace.note;
     return out;
@@ -116,12 +123,20 @@ ThickReport thick_report(const CreasePattern& flat, const Topology& topology, co
     if (zero.states.empty())
       throw InputError("hinges", "bennett needs a folded zero-thickness state to pick each vertex's staircase, and there is none (" +
                                      zero.note + ")");
-    // The most folded sample: Bennett start creases are told apart best away from flat.
-    try {
-      report.edge_heights = bennett_hinge_heights(flat, topology, zero.states.back(), request.thickness);
-    } catch (const std::invalid_argument& e) {
-      throw InputError("hinges", std::string("no Bennett hinge heights: ") + e.what());
+    // bennett_hinge_heights picks each vertex's staircase as the first start crease that closes
+    // at the given state; where two close there (the square twist's vertices), the pick can
+    // differ between states and only some picks agree round a cycle. So each sample is tried,
+    // the most folded first; the heights found are then checked against every sample (the
+    // off-motion test) and by the trace.
+    std::string first_failure;
+    for (auto it = zero.states.rbegin(); it != zero.states.rend() && report.edge_heights.empty(); ++it) {
+      try {
+        report.edge_heights = bennett_hinge_heights(flat, topology, *it, request.thickness);
+      } catch (const std::invalid_argument& e) {
+        if (first_failure.empty()) first_failure = e.what();
+      }
     }
+    if (report.edge_heights.empty()) throw InputError("hinges", "no Bennett hinge heights: " + first_failure);
   } else {
     report.edge_heights = placement_heights(flat, topology, request.thickness, request.hinges);
   }

@@ -18,7 +18,10 @@
 //         zero-thickness motion and a Miura-ori is rigid (DOF 0 at a regular flat state),
 //         though each vertex alone keeps first-order DOF 1 at its singular flat state;
 //       kBennett: the heights of bennett_heights.hpp (Bennett staircases, thickness scale t),
-//         which keep the zero-thickness motion; needs a zero-thickness folded state.
+//         which keep the zero-thickness motion; needs zero-thickness folded states. Each is
+//         tried, the most folded first, until the per-vertex staircases agree on every shared
+//         crease (where two start creases close at a state, bennett_hinge_heights' pick
+//         depends on the state); the heights are then checked against every state.
 //   - zero-thickness fold states to compare with (per flat edge, radians, FOLD sign), all on
 //     one branch driven by crease `drive`, in order of increasing |drive angle|; the thick
 //     trace is taken at their driving angles. zero_thickness_samples() makes them with
@@ -65,11 +68,14 @@ struct ZeroThicknessSamples {
   std::string note;                    // why there are none (empty when there are)
 };
 
-// The first branch of trace_motion (default drive and direction; the model check picks),
-// `steps` equal steps up to 170 deg, kept while |drive| <= max_drive (radians). Only states
-// whose closure residual is <= 1e-10 are kept.
+// The first branch of trace_motion (default drive and direction - its letter's way; the
+// model check picks), `steps` equal steps up to 170 deg, kept while |drive| <= max_drive
+// (radians). reverse: the same drive traced the other way from flat (to -170 deg of the
+// letter's way: every crease against its letter on a multiplier family), for designs that
+// exist only that way (the Type 3 square twist's Bennett heights). Only states whose
+// closure residual is <= 1e-10 are kept.
 ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Topology& topology, int steps = 17,
-                                            double max_drive = 1.5707963267948966);
+                                            double max_drive = 1.5707963267948966, bool reverse = false);
 
 struct ThickReportRequest {
   double thickness = 0.0;  // > 0, pattern units

@@ -1,8 +1,8 @@
-// `rigidfold thick` (app/command_thick.cpp): a 2 x 3 Miura-ori with Bennett hinge heights
-// folds with one DOF along the zero-thickness motion; the bundled 4 x 4 Miura-ori has no
-// uniform Bennett heights (exit 2 naming the crease), with hinges on the valley side it is
-// rigid (DOF 0, every vertex off the zero-thickness motion), with hinges on the top face it
-// folds as at zero thickness; the thick sheet and the slabs are written; bad input exits 2
+// `rigidfold thick` (app/command_thick.cpp): the bundled 4 x 4 Miura-ori with Bennett hinge
+// heights folds with one DOF along the zero-thickness motion, with hinges on the valley side
+// it is rigid (DOF 0, every vertex off the zero-thickness motion), with hinges on the top face
+// it folds as at zero thickness; the Type 3 square twist has Bennett heights only against its
+// letters (--reverse); the thick sheet and the slabs are written; bad input exits 2
 // naming the flag or file; the JSON ends with the provenance.
 #include <gtest/gtest.h>
 
@@ -52,13 +52,13 @@ const std::string& small_miura() {
 }
 
 TEST(ThickCli, BennettMiuraFollowsTheZeroThicknessMotionWithOneDof) {
-  const auto j = run_json(small_miura() + " --thickness 0.05 --hinges bennett");
+  const auto j = run_json(kMiura + " --thickness 0.05 --hinges bennett");
   EXPECT_EQ(j["hinges"], "bennett");
   EXPECT_EQ(j["flat_state"]["dof"].get<int>(), 1);
   EXPECT_GT(j["flat_state"]["smallest_kept_singular_value"].get<double>(), 1e3 * j["flat_state"]["rank_cut"].get<double>());
   EXPECT_TRUE(j["flat_state"]["locked_vertices"].empty());
   EXPECT_TRUE(j["flat_state"]["off_motion_vertices"].empty());
-  EXPECT_EQ(j["flat_state"]["vertices"].size(), 2u);
+  EXPECT_EQ(j["flat_state"]["vertices"].size(), 9u);
   const auto& steps = j["trace"]["steps"];
   ASSERT_GE(steps.size(), 5u);
   EXPECT_EQ(steps.size(), j["zero_thickness"]["states"].get<std::size_t>());
@@ -75,11 +75,21 @@ TEST(ThickCli, BennettMiuraFollowsTheZeroThicknessMotionWithOneDof) {
   EXPECT_EQ(j["provenance"]["command"], "thick");
 }
 
-TEST(ThickCli, BundledMiuraHasNoUniformBennettHeights) {
-  const auto r = test::run_command(test::cli() + " thick " + kMiura + " --thickness 0.05");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--hinges: no Bennett hinge heights"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("crease"), std::string::npos) << r.err;
+TEST(ThickCli, BennettSquareTwistFoldsAgainstItsLettersOnly) {
+  const std::string twist = scratch("twist3.fold").string();
+  const auto g = test::run_command(test::cli() + " generate square-twist --type 3 --out " + twist);
+  ASSERT_EQ(g.status, 0) << g.err;
+  const auto along = test::run_command(test::cli() + " thick " + twist + " --thickness 0.05");
+  EXPECT_EQ(along.status, 2);
+  EXPECT_NE(along.err.find("--hinges: no Bennett hinge heights"), std::string::npos) << along.err;
+  const auto j = run_json(twist + " --thickness 0.05 --reverse");
+  EXPECT_EQ(j["zero_thickness"]["direction"], "against the letters");
+  EXPECT_EQ(j["flat_state"]["dof"].get<int>(), 1);
+  EXPECT_EQ(j["flat_state"]["vertices"].size(), 4u);
+  EXPECT_TRUE(j["flat_state"]["off_motion_vertices"].empty());
+  ASSERT_GE(j["trace"]["steps"].size(), 5u);
+  EXPECT_LE(j["trace"]["max_deviation_rad"].get<double>(), 1e-10);
+  EXPECT_LE(j["trace"]["max_residual"].get<double>(), 1e-10);
 }
 
 TEST(ThickCli, ValleySideHingesMakeTheMiuraRigid) {
