@@ -136,7 +136,11 @@ ThickReport thick_report(const CreasePattern& flat, const Topology& topology, co
         if (first_failure.empty()) first_failure = e.what();
       }
     }
-    if (report.edge_heights.empty()) throw InputError("hinges", "no Bennett hinge heights: " + first_failure);
+    if (report.edge_heights.empty())
+      throw InputError("hinges", "no Bennett hinge heights: " + first_failure + " (the most folded of " +
+                                     std::to_string(zero.states.size()) +
+                                     " zero-thickness states; at every one the staircases picked disagree somewhere, though a "
+                                     "vertex where two staircases close leaves picks that were not tried)");
   } else {
     report.edge_heights = placement_heights(flat, topology, request.thickness, request.hinges);
   }
