@@ -67,7 +67,7 @@ void add_thick_command(CLI::App& app) {
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
-  cmd->add_option("--thickness", a->thickness, "panel thickness (> 0, the pattern's length units)")->required()->check(finite_number());
+  cmd->add_option("--thickness", a->thickness, "panel thickness (> 0, the pattern's length units)")->required();
   cmd->add_option("--hinges", a->hinges,
                   "hinge placement: top, bottom or mid (every hinge on that face), valley (on the face each crease folds towards: "
                   "top for V, bottom for M), bennett (Bennett heights that keep the zero-thickness motion; default)");
