@@ -59,6 +59,23 @@ for name in corrugated_p_rigid corrugated_q_rigid square_twist_30_type1; do
   /usr/bin/python3 python/plot_assignments.py "data/bundled/$name.fold" "out/report/assignments/$name.json" \
     --out "out/report/figures/${name}_assignments.png" >/dev/null
 done
+# Thick panels (seed 003 ch. 4): the bundled 4x4 Miura with Bennett hinge heights (DOF 1, on the
+# zero-thickness motion) and with each hinge on the face its crease folds toward (rigid), the
+# Bennett sheet as FOLD and its slabs at 60 deg as STL.
+mkdir -p out/report/thick
+./build/app/rigidfold thick data/bundled/miura_4x4_alpha60.fold --thickness 0.05 --hinges bennett \
+  --out out/report/thick/miura_4x4_bennett.fold --stl out/report/thick/miura_4x4_bennett_60deg.stl --at 60 \
+  --json > out/report/thick/miura_4x4_bennett.json
+./build/app/rigidfold thick data/bundled/miura_4x4_alpha60.fold --thickness 0.05 --hinges valley \
+  --json > out/report/thick/miura_4x4_valley.json
+# Formats: every bundled crease pattern as SVG (Origami Simulator's convention) and DXF; the tube
+# has no flat crease pattern and is skipped.
+mkdir -p out/report/export
+for f in data/bundled/*.fold; do
+  name="$(basename "$f" .fold)"
+  [ "$name" = miura_tube_6_alpha60 ] && continue
+  ./build/app/rigidfold export "$f" --svg "out/report/export/$name.svg" --dxf "out/report/export/$name.dxf" >/dev/null
+done
 # The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
 # playable from out/report/viewer/index.html, and a screenshot of it (type2m.png).
 bash viewer/main_job.sh out/report
