@@ -116,8 +116,10 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
   for (int s = 0; s < options.starts && static_cast<int>(found.size()) < options.max_lines; ++s) {
     Eigen::VectorXd c = k == 1 ? Eigen::VectorXd::Ones(1) : gen.unit(k);
     bool ok = false;
+    Eigen::MatrixXd Hc(k, p);  // column j: H_j c, for both q_j = c . H_j c and the Jacobian row 2 (H_j c)^T
     for (int it = 0; it < 60; ++it) {
-      const Eigen::VectorXd q = quadratics(H, c);
+      for (int j = 0; j < p; ++j) Hc.col(j).noalias() = H[j] * c;
+      const Eigen::VectorXd q = Hc.transpose() * c;
       if (q.lpNorm<Eigen::Infinity>() <= 1e-3 * accept) {
         ok = true;
         break;
@@ -125,7 +127,7 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
       // Minimum-norm Gauss-Newton step on [q(c); |c|^2 - 1] = 0.
       Eigen::MatrixXd A(p + 1, k);
       Eigen::VectorXd b(p + 1);
-      for (int j = 0; j < p; ++j) A.row(j) = 2.0 * (H[j] * c).transpose();
+      A.topRows(p) = 2.0 * Hc.transpose();
       A.row(p) = 2.0 * c.transpose();
       b.head(p) = q;
       b[p] = c.squaredNorm() - 1.0;
