@@ -1,7 +1,5 @@
 #include "kernel/pattern/opx_reader.hpp"
 
-#include <expat.h>
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -12,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kernel/pattern/guarded_xml_parser.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/json_input.hpp"
@@ -36,30 +35,12 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-class OpxParser {
+class OpxParser : public GuardedXmlParser {
  public:
-  explicit OpxParser(const std::string& source) : source_(source) {}
+  explicit OpxParser(const std::string& source) : GuardedXmlParser(source) {}
 
   void parse(const std::string& text) {
-    XML_Parser parser = XML_ParserCreate(nullptr);
-    if (!parser) throw std::bad_alloc();
-    parser_ = parser;
-    XML_SetUserData(parser, this);
-    XML_SetElementHandler(parser, &OpxParser::on_start, &OpxParser::on_end);
-    XML_SetCharacterDataHandler(parser, &OpxParser::on_text);
-    XML_SetStartDoctypeDeclHandler(parser, &OpxParser::on_doctype);
-    XML_SetEntityDeclHandler(parser, &OpxParser::on_entity_decl);
-    XML_SetSkippedEntityHandler(parser, &OpxParser::on_skipped_entity);
-    XML_SetParamEntityParsing(parser, XML_PARAM_ENTITY_PARSING_NEVER);
-    const XML_Status status = XML_Parse(parser, text.data(), static_cast<int>(text.size()), XML_TRUE);
-    const XML_LChar* message = XML_ErrorString(XML_GetErrorCode(parser));
-    const std::string xml_error = message ? message : "";
-    const auto line = XML_GetCurrentLineNumber(parser), column = XML_GetCurrentColumnNumber(parser);
-    XML_ParserFree(parser);
-    parser_ = nullptr;
-    if (error_) std::rethrow_exception(error_);
-    if (status != XML_STATUS_OK)
-      throw InputError(source_ + ": line " + std::to_string(line) + ", column " + std::to_string(column + 1), "XML: " + xml_error);
+    parse_xml(text);
     if (!saw_dataset_) throw InputError(source_, "no <object class=\"oripa.DataSet\"> in <java>: not an ORIPA .opx");
     if (!saw_lines_) throw InputError(source_, "the oripa.DataSet has no \"lines\" property");
   }
@@ -74,44 +55,14 @@ class OpxParser {
     std::string property;  // Property: its name
   };
 
-  template <class F>
-  static void guarded(void* self_ptr, F&& f) {
-    auto* self = static_cast<OpxParser*>(self_ptr);
-    if (self->error_) return;
-    try {
-      f(*self);
-    } catch (...) {
-      self->error_ = std::current_exception();
-      XML_StopParser(self->parser_, XML_FALSE);
-    }
-  }
-  static void XMLCALL on_start(void* p, const XML_Char* name, const XML_Char** atts) {
-    guarded(p, [&](OpxParser& s) { s.start(name, atts); });
-  }
-  static void XMLCALL on_end(void* p, const XML_Char*) {
-    guarded(p, [&](OpxParser& s) { s.end(); });
-  }
-  static void XMLCALL on_text(void* p, const XML_Char* text, int len) {
-    guarded(p, [&](OpxParser& s) {
-      if (s.stack_.empty() || s.stack_.back().role != Role::Value) return;
-      if (s.text_.size() + len > kMaxValueChars) throw InputError(s.line_place(), "a value longer than " + std::to_string(kMaxValueChars) + " characters");
-      s.text_.append(text, len);
-    });
-  }
-  static void XMLCALL on_doctype(void* p, const XML_Char*, const XML_Char*, const XML_Char*, int has_internal_subset) {
-    guarded(p, [&](OpxParser& s) {
-      if (has_internal_subset) throw InputError(s.here(), "a document type with an internal subset (entity declarations) is refused");
-    });
-  }
-  static void XMLCALL on_entity_decl(void* p, const XML_Char* name, int, const XML_Char*, int, const XML_Char*, const XML_Char*,
-                                     const XML_Char*, const XML_Char*) {
-    guarded(p, [&](OpxParser& s) { throw InputError(s.here(), std::string("entity declaration '") + name + "' is refused"); });
-  }
-  static void XMLCALL on_skipped_entity(void* p, const XML_Char* name, int) {
-    guarded(p, [&](OpxParser& s) { throw InputError(s.here(), std::string("entity reference '&") + name + ";' is refused"); });
+  void start_element(const char* name, const char** atts) override { start(name, atts); }
+  void end_element() override { end(); }
+  void character_data(const char* text, int len) override {
+    if (stack_.empty() || stack_.back().role != Role::Value) return;
+    if (text_.size() + len > kMaxValueChars) throw InputError(line_place(), "a value longer than " + std::to_string(kMaxValueChars) + " characters");
+    text_.append(text, len);
   }
 
-  std::string here() const { return source_ + ": line " + std::to_string(XML_GetCurrentLineNumber(parser_)); }
   // The line being read: "CP.opx: lines[3] (line 40)".
   std::string line_place() const {
     if (lines.empty()) return here();
@@ -192,7 +143,7 @@ class OpxParser {
                                        "> where <object class=\"oripa.OriLineProxy\"> was expected");
         OpxLine l;
         l.index = entry_index_;
-        l.xml_line = static_cast<long>(XML_GetCurrentLineNumber(parser_));
+        l.xml_line = current_line();
         lines.push_back(l);
         seen_.clear();
         stack_.push_back({Role::LineObject, {}});
@@ -241,9 +192,6 @@ class OpxParser {
     stack_.pop_back();
   }
 
-  std::string source_;
-  XML_Parser parser_ = nullptr;
-  std::exception_ptr error_;
   std::vector<Node> stack_;
   bool saw_dataset_ = false, saw_lines_ = false;
   long length_ = 0;

@@ -1,6 +1,5 @@
 #include "kernel/pattern/svg_reader.hpp"
 
-#include <expat.h>
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -17,6 +16,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "kernel/pattern/guarded_xml_parser.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/json_input.hpp"
@@ -388,29 +388,12 @@ struct Label {
   bool operator==(const Label& o) const { return assignment == o.assignment && fold_angle == o.fold_angle; }
 };
 
-class SvgParser {
+class SvgParser : public GuardedXmlParser {
  public:
-  SvgParser(const std::string& source) : source_(source) {}
+  explicit SvgParser(const std::string& source) : GuardedXmlParser(source) {}
 
   void parse(const std::string& text) {
-    XML_Parser parser = XML_ParserCreateNS(nullptr, kNamespaceSeparator);
-    if (!parser) throw std::bad_alloc();
-    parser_ = parser;
-    XML_SetUserData(parser, this);
-    XML_SetElementHandler(parser, &SvgParser::on_start, &SvgParser::on_end);
-    XML_SetStartDoctypeDeclHandler(parser, &SvgParser::on_doctype);
-    XML_SetEntityDeclHandler(parser, &SvgParser::on_entity_decl);
-    XML_SetSkippedEntityHandler(parser, &SvgParser::on_skipped_entity);
-    XML_SetParamEntityParsing(parser, XML_PARAM_ENTITY_PARSING_NEVER);
-    const XML_Status status = XML_Parse(parser, text.data(), static_cast<int>(text.size()), XML_TRUE);
-    const XML_LChar* message = XML_ErrorString(XML_GetErrorCode(parser));  // null for "no error"
-    const std::string xml_error = message ? message : "";
-    const auto line = XML_GetCurrentLineNumber(parser), column = XML_GetCurrentColumnNumber(parser);
-    XML_ParserFree(parser);
-    parser_ = nullptr;
-    if (error_) std::rethrow_exception(error_);
-    if (status != XML_STATUS_OK)
-      throw InputError(source_ + ": line " + std::to_string(line) + ", column " + std::to_string(column + 1), "XML: " + xml_error);
+    parse_xml(text, kNamespaceSeparator);
     if (!saw_root_) throw InputError(source_, "no <svg> root element");
   }
 
@@ -421,40 +404,8 @@ class SvgParser {
   SvgImportSummary summary;
 
  private:
-  // Callbacks run inside Expat (C): no exception may cross it. The first one is kept, the
-  // parser stopped, and parse() rethrows it.
-  template <class F>
-  static void guarded(void* self_ptr, F&& f) {
-    auto* self = static_cast<SvgParser*>(self_ptr);
-    if (self->error_) return;
-    try {
-      f(*self);
-    } catch (...) {
-      self->error_ = std::current_exception();
-      XML_StopParser(self->parser_, XML_FALSE);
-    }
-  }
-  static void XMLCALL on_start(void* p, const XML_Char* name, const XML_Char** atts) {
-    guarded(p, [&](SvgParser& s) { s.start(name, atts); });
-  }
-  static void XMLCALL on_end(void* p, const XML_Char*) {
-    guarded(p, [&](SvgParser& s) { s.stack_.pop_back(); });
-  }
-  static void XMLCALL on_doctype(void* p, const XML_Char*, const XML_Char*, const XML_Char*, int has_internal_subset) {
-    guarded(p, [&](SvgParser& s) {
-      if (has_internal_subset)
-        throw InputError(s.here(), "a document type with an internal subset (entity declarations) is refused");
-    });
-  }
-  static void XMLCALL on_entity_decl(void* p, const XML_Char* name, int, const XML_Char*, int, const XML_Char*, const XML_Char*,
-                                     const XML_Char*, const XML_Char*) {
-    guarded(p, [&](SvgParser& s) { throw InputError(s.here(), std::string("entity declaration '") + name + "' is refused"); });
-  }
-  static void XMLCALL on_skipped_entity(void* p, const XML_Char* name, int) {
-    guarded(p, [&](SvgParser& s) { throw InputError(s.here(), std::string("entity reference '&") + name + ";' is refused"); });
-  }
-
-  std::string here() const { return source_ + ": line " + std::to_string(XML_GetCurrentLineNumber(parser_)); }
+  void start_element(const char* name, const char** atts) override { start(name, atts); }
+  void end_element() override { stack_.pop_back(); }
 
   void start(const char* qname, const char** atts) {
     if (++summary.elements > kMaxSvgElements)
@@ -470,7 +421,7 @@ class SvgParser {
     const std::string tag(local);
     const int ordinal = ++tag_count_[tag];
     const std::string place = source_ + ": <" + tag + "> #" + std::to_string(ordinal) + " (line " +
-                              std::to_string(XML_GetCurrentLineNumber(parser_)) + ")";
+                              std::to_string(current_line()) + ")";
     if (stack_.empty()) {
       if (tag != "svg" || (!ns.empty() && ns != kSvgNamespace)) throw InputError(source_, "root element is <" + tag + ">, not <svg>");
       saw_root_ = true;
@@ -748,9 +699,6 @@ class SvgParser {
 
  private:
 
-  std::string source_;
-  XML_Parser parser_ = nullptr;
-  std::exception_ptr error_;
   std::vector<Frame> stack_;
   std::map<std::string, int> tag_count_;
   bool saw_root_ = false;
