@@ -4,7 +4,6 @@ with the files it was drawn from and the rigidfold version that wrote them where
 Used by the python/plot_*.py scripts: ``stamp_inputs(fig, [path, ...], version=None)`` before
 ``fig.savefig``. Paths are shown relative to the working directory when below it.
 """
-import json
 import os
 
 
@@ -14,13 +13,10 @@ def _shown(path):
     return path if rel.startswith("..") else rel
 
 
-def version_of(json_path):
-    """The "rigidfold_version" (and commit) in a JSON output's provenance, or None."""
-    try:
-        with open(json_path) as f:
-            p = json.load(f).get("provenance", {})
-    except (OSError, ValueError, AttributeError):
-        return None
+def version_of(document):
+    """The "rigidfold_version" (and commit) in the provenance of a JSON output the script has
+    already loaded (a dict), or None."""
+    p = document.get("provenance", {}) if isinstance(document, dict) else {}
     if "rigidfold_version" not in p:
         return None
     return f"rigidfold {p['rigidfold_version']} ({p.get('rigidfold_commit', '?')})"

@@ -74,7 +74,7 @@ def main():
     fig.suptitle(a.title or (f"{summary['classes']} classes of {summary['assignments']} flat-folding assignments, "
                              f"{summary['foldable_classes']} rigid (M red, V blue dashed)"), fontsize=10)
     fig.tight_layout()
-    stamp_inputs(fig, [a.pattern, a.classes], version_of(a.classes))
+    stamp_inputs(fig, [a.pattern, a.classes], version_of(summary))
     fig.savefig(a.out, dpi=110)
     return 0
 

@@ -12,7 +12,7 @@ import math
 import sys
 from collections import defaultdict
 
-from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
+from figure_source import stamp_inputs  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")

@@ -111,7 +111,7 @@ def main(argv):
     fig.suptitle(a.title or f"{check.get('file', '')}: branches (colour: every letter kept), bifurcations (red), fold limit (x)",
                  fontsize=9)
     fig.tight_layout()
-    stamp_inputs(fig, [a.check_json, *a.csvs], version_of(a.check_json))
+    stamp_inputs(fig, [a.check_json, *a.csvs], version_of(check))
     fig.savefig(a.out, dpi=110)
     print(a.out)
     return 0

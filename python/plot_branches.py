@@ -21,7 +21,7 @@ import csv
 import os
 import sys
 
-from figure_source import stamp_inputs, version_of  # python/figure_source.py (the script directory is on sys.path)
+from figure_source import stamp_inputs  # python/figure_source.py (the script directory is on sys.path)
 import matplotlib
 
 matplotlib.use("Agg")

@@ -95,7 +95,7 @@ def main():
         draw_crease_pattern(ax, load(p["file"]), f"{p['name']}\n{p['local_verdict'][:60]}")
     fig.suptitle("Bundled crease patterns (mountain red dashed, valley blue)")
     fig.tight_layout()
-    stamp_inputs(fig, [p["file"] for p in patterns], version_of(os.path.join(args.outdir, "report.json")))
+    stamp_inputs(fig, [p["file"] for p in patterns], version_of(report))
     fig.savefig(os.path.join(figdir, "crease_patterns.png"), dpi=110)
     plt.close(fig)
 
@@ -107,7 +107,7 @@ def main():
         draw_folded(fig.add_subplot(1, 2, 2, projection="3d"), load(p["folded_file"]),
                     f"folded; closure mismatch {p['relative_closure_mismatch']:.1e} (relative)")
         fig.tight_layout()
-        stamp_inputs(fig, [p["file"], p["folded_file"]], version_of(os.path.join(args.outdir, "report.json")))
+        stamp_inputs(fig, [p["file"], p["folded_file"]], version_of(report))
         fig.savefig(os.path.join(figdir, f"{p['name']}_folded.png"), dpi=110)
         plt.close(fig)
 

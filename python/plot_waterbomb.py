@@ -113,7 +113,7 @@ def main():
     fig.suptitle(a.title or f"waterbomb base n = {n}, rest theta0 = {t0} deg, k_m = {summary.get('k_m')}, "
                  f"k_v = {summary.get('k_v')}")
     fig.tight_layout()
-    stamp_inputs(fig, [a.curve, a.summary], version_of(a.summary))
+    stamp_inputs(fig, [a.curve, a.summary], version_of(summary))
     fig.savefig(a.out, dpi=120)
     return 0
 
