@@ -46,8 +46,6 @@ void add_energy_command(CLI::App& app) {
   cmd->add_option("--seed", a->seed, "seed of the random starts (default 1)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->callback([a] {
-    if (a->starts < 0 || a->starts > kMaxSpringStateStarts)
-      throw InputError("--starts", "must be between 0 and " + std::to_string(kMaxSpringStateStarts));
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     CreaseSpringProblem problem;
@@ -59,12 +57,11 @@ void add_energy_command(CLI::App& app) {
     problem.rest_place = a->rest;
     CreaseSpringStates found;
     try {
-      // Checked before the rest file is read, as the flags are.
-      stiffness_by_assignment(p, problem.stiffness);
       problem.rest = read_rest_state(a->rest, p, t);
       found = crease_spring_states(p, t, problem);
     } catch (const InputError& e) {
       // The kernel names its parameters; the user typed flags.
+      if (e.place() == "starts") throw InputError("--starts", std::string(e.what()).substr(e.place().size() + 2));
       if (e.place().rfind("stiffness.", 0) == 0) {
         const std::string flag = e.place() == "stiffness.mountain" ? "--k-m" : e.place() == "stiffness.valley" ? "--k-v" : "--k-u";
         throw InputError(flag, "must be a finite number >= 0");
