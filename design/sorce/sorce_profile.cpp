@@ -157,4 +157,17 @@ RollingResidual rolling_residual(const FoldMotion& m, double t) {
   return r;
 }
 
+SampledProfiles sample_profiles(const FoldMotion& motion, int samples) {
+  if (samples < 2) throw InputError("samples", "need at least 2 points per profile");
+  SampledProfiles s;
+  for (int k = 0; k < samples; ++k) {
+    const double t = static_cast<double>(k) / (samples - 1);
+    const ProfilePoint p = profile_point(motion, t);
+    s.t.push_back(t);
+    s.left.push_back(p.s_left);
+    s.right.push_back(p.s_right);
+  }
+  return s;
+}
+
 }  // namespace rigidfold::sorce

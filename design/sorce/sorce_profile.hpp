@@ -18,6 +18,7 @@
 //
 // Units: lengths in the caller's unit, angles radians (gamma > 0 valley), t in [0, 1].
 #include <Eigen/Core>
+#include <vector>
 
 #include "design/sorce/sorce_function.hpp"
 
@@ -51,6 +52,15 @@ struct ProfilePoint {
 // Eqs 56/57 at t (exact derivatives, no differencing). Where gamma'(t) = 0 the profile is
 // undefined: throws InputError("t") (see fold_report's ill-behaved points).
 ProfilePoint profile_point(const FoldMotion& motion, double t);
+
+// The profile pair at `samples` evenly spaced t in [0, 1], both ends included (each by
+// profile_point, exact). For drawings and solids. Throws InputError("samples") if samples < 2,
+// and passes on profile_point's error where gamma' = 0.
+struct SampledProfiles {
+  std::vector<double> t;
+  std::vector<Vec2> left, right;
+};
+SampledProfiles sample_profiles(const FoldMotion& motion, int samples);
 
 // eq 20: s0 = [z_l'(0) - z_r'(0)] / gamma'(0), the lateral offset of the initial contact.
 double initial_contact_offset(const FoldMotion& motion);

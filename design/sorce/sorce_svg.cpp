@@ -4,9 +4,8 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <utility>
 #include <vector>
-
-#include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
 
@@ -35,15 +34,12 @@ struct Sampled {
 };
 
 Sampled sample(const FoldMotion& m, int samples) {
-  if (samples < 2) throw InputError("samples", "need at least 2 points per profile");
+  SampledProfiles p = sample_profiles(m, samples);
   Sampled s;
-  for (int k = 0; k < samples; ++k) {
-    const ProfilePoint p = profile_point(m, static_cast<double>(k) / (samples - 1));
-    s.left.push_back(p.s_left);
-    s.right.push_back(p.s_right);
-    s.box.add(p.s_left);
-    s.box.add(p.s_right);
-  }
+  s.left = std::move(p.left);
+  s.right = std::move(p.right);
+  for (const Vec2& q : s.left) s.box.add(q);
+  for (const Vec2& q : s.right) s.box.add(q);
   for (double h : {m.thickness_left, m.thickness_right}) {
     s.box.add(Vec2(s.box.x0, h / 2));
     s.box.add(Vec2(s.box.x0, -h / 2));

@@ -5,8 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <string>
 
@@ -15,44 +13,13 @@
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "tests/support/stl_mesh.hpp"
 
 namespace rigidfold {
 namespace {
 
-struct StlTriangle {
-  Eigen::Vector3d normal, v[3];
-  std::uint16_t attribute = 0;
-};
-
-std::uint32_t get_u32(const std::string& s, std::size_t at) {
-  std::uint32_t x = 0;
-  for (int k = 0; k < 4; ++k) x |= static_cast<std::uint32_t>(static_cast<unsigned char>(s[at + k])) << (8 * k);
-  return x;
-}
-double get_f32(const std::string& s, std::size_t at) {
-  const std::uint32_t bits = get_u32(s, at);
-  float f;
-  std::memcpy(&f, &bits, sizeof f);
-  return f;
-}
-
-std::vector<StlTriangle> parse_stl(const std::string& bytes) {
-  EXPECT_GE(bytes.size(), 84u);
-  EXPECT_EQ(bytes.substr(0, 9), "rigidfold");
-  const std::uint32_t n = get_u32(bytes, 80);
-  EXPECT_EQ(bytes.size(), 84u + 50u * n);
-  std::vector<StlTriangle> out;
-  for (std::uint32_t k = 0; k < n && 84 + 50 * (k + 1) <= bytes.size(); ++k) {
-    const std::size_t at = 84 + 50 * std::size_t{k};
-    StlTriangle t;
-    for (int i = 0; i < 3; ++i) t.normal[i] = get_f32(bytes, at + 4 * i);
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) t.v[j][i] = get_f32(bytes, at + 12 + 12 * j + 4 * i);
-    t.attribute = static_cast<std::uint16_t>(static_cast<unsigned char>(bytes[at + 48]) | (static_cast<unsigned char>(bytes[at + 49]) << 8));
-    out.push_back(t);
-  }
-  return out;
-}
+using testing::parse_stl;
+using testing::StlTriangle;
 
 // Float32 rounding: each coordinate moves by at most 2^-24 of the largest |coordinate| M, so
 // a triangle's doubled area (b - a) x (c - a) changes by at most

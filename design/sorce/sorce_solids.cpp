@@ -1,0 +1,169 @@
+#include "design/sorce/sorce_solids.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <boost/geometry.hpp>
+
+#include "kernel/pattern/input_error.hpp"
+
+namespace rigidfold::sorce {
+namespace {
+
+namespace bg = boost::geometry;
+using BgPoint = bg::model::d2::point_xy<double>;
+using BgPolygon = bg::model::polygon<BgPoint>;
+
+double signed_area(const std::vector<Vec2>& p) {
+  double a = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Vec2& u = p[k];
+    const Vec2& v = p[(k + 1) % p.size()];
+    a += u.x() * v.y() - u.y() * v.x();
+  }
+  return a / 2;
+}
+
+// A prism: the 2D section (in the basis u, v at `origin`) swept along e = u x v from a to b.
+// Appends its polygons, outward, to `out` tagged with `shell`.
+void add_prism(PanelSolid& out, int shell, const Eigen::Vector3d& origin, const Eigen::Vector3d& u,
+               const Eigen::Vector3d& v, std::vector<Vec2> section, double a, double b) {
+  if (signed_area(section) < 0.0) std::reverse(section.begin(), section.end());  // counter-clockwise about e
+  const Eigen::Vector3d e = u.cross(v);
+  auto at = [&](const Vec2& p, double w) -> Eigen::Vector3d { return origin + p.x() * u + p.y() * v + w * e; };
+  Polygon3 top, bottom;
+  for (const Vec2& p : section) top.push_back(at(p, b));
+  for (auto it = section.rbegin(); it != section.rend(); ++it) bottom.push_back(at(*it, a));
+  out.polygons.push_back(std::move(top));
+  out.polygons.push_back(std::move(bottom));
+  out.shell_of_polygon.insert(out.shell_of_polygon.end(), 2, shell);
+  for (std::size_t k = 0; k < section.size(); ++k) {
+    const Vec2& p = section[k];
+    const Vec2& q = section[(k + 1) % section.size()];
+    out.polygons.push_back({at(p, a), at(q, a), at(q, b), at(p, b)});  // (q - p) x e points out of a CCW section
+    out.shell_of_polygon.push_back(shell);
+  }
+  out.shell_volumes.push_back(std::abs(signed_area(section)) * (b - a));
+}
+
+// Keeps the part of a convex polygon where n . p >= c (Sutherland-Hodgman, one plane).
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Vec2& n, double c) {
+  std::vector<Vec2> out;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Vec2& p = poly[k];
+    const Vec2& q = poly[(k + 1) % poly.size()];
+    const double fp = n.dot(p) - c, fq = n.dot(q) - c;
+    if (fp >= 0.0) out.push_back(p);
+    if ((fp >= 0.0) != (fq >= 0.0)) out.push_back(p + (q - p) * (fp / (fp - fq)));
+  }
+  return out;
+}
+
+bool simple_section(const std::vector<Vec2>& section) {
+  BgPolygon poly;
+  for (const Vec2& p : section) bg::append(poly.outer(), BgPoint(p.x(), p.y()));
+  bg::correct(poly);  // closes the ring and orients it as Boost.Geometry expects
+  return bg::is_valid(poly);
+}
+
+}  // namespace
+
+PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options) {
+  const double h = input.thickness;
+  if (!(h > 0.0) || !std::isfinite(h)) throw InputError("thickness", "must be a positive number");
+  if (!(options.overlap > 0.0) || !(options.margin > options.overlap) || !std::isfinite(options.margin))
+    throw InputError("options", "need 0 < overlap < margin (fractions of the thickness)");
+  const std::size_t n = input.polygon.size();
+  if (n < 3) throw InputError("polygon", "a panel needs at least 3 points");
+  std::vector<Vec2> flat;
+  double scale = 0.0;
+  for (const Eigen::Vector3d& p : input.polygon) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d& p = input.polygon[k];
+    if (!p.allFinite() || std::abs(p.z()) > 1e-12 * std::max(scale, 1.0))
+      throw InputError("polygon[" + std::to_string(k) + "]", "panel points must be finite and flat (z = 0)");
+    flat.push_back(p.head<2>());
+  }
+  for (std::size_t k = 0; k < n; ++k) {  // convex, counter-clockwise: every turn is to the left
+    const Vec2 a = flat[(k + 1) % n] - flat[k], b = flat[(k + 2) % n] - flat[(k + 1) % n];
+    if (!(a.x() * b.y() - a.y() * b.x() > 0.0))
+      throw InputError("polygon[" + std::to_string((k + 1) % n) + "]", "the panel must be convex and counter-clockwise seen from +z");
+  }
+  const double gap = options.vertex_gap < 0.0 ? h : options.vertex_gap;
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+
+  PanelSolid out;
+  std::vector<Vec2> slab = flat;
+  struct CamShell {
+    int index;
+    std::vector<Vec2> section;
+    double a, b;
+  };
+  std::vector<CamShell> cams;
+  for (std::size_t k = 0; k < input.cams.size(); ++k) {
+    const CamSide& c = input.cams[k];
+    const std::string place = "cams[" + std::to_string(k) + "]";
+    const double frame_error = std::max({std::abs(c.fold_direction.norm() - 1.0), std::abs(c.x_axis.norm() - 1.0),
+                                         std::abs(c.fold_direction.dot(c.x_axis)), std::abs(c.fold_direction.z()),
+                                         std::abs(c.x_axis.z())});
+    if (!(frame_error <= 1e-9) || !c.origin.allFinite()) throw InputError(place, "the fold frame must be orthonormal in the plane z = 0");
+    if (!(c.w1 > c.w0)) throw InputError(place, "the crease extent needs w1 > w0");
+    if (c.profile.size() < 2) throw InputError(place, "a profile needs at least 2 points");
+    // The right panel mirrored (x -> -x) so that both panels lie at x < 0 of the fold line.
+    const double mirror = c.left ? 1.0 : -1.0;
+    std::vector<Vec2> profile;
+    double x_min = 0.0, extent = 0.0;
+    for (const Vec2& p : c.profile) {
+      if (!p.allFinite()) throw InputError(place, "profile points must be finite");
+      profile.emplace_back(mirror * p.x(), p.y());
+      x_min = std::min(x_min, profile.back().x());
+      extent = std::max(extent, (p - c.profile.front()).norm());
+    }
+    const double x_base = x_min - options.margin * h;
+    // The slab keeps mirror * (p - origin) . x_axis <= x_cut: x_base + overlap h under a cam,
+    // x_base (the margin behind the fold line) at a plain revolute.
+    const Vec2 inward = -mirror * c.x_axis.head<2>();
+    const bool revolute = extent <= 1e-9 * h;
+    slab = clip(slab, inward, inward.dot(c.origin.head<2>()) - (revolute ? x_base : x_base + options.overlap * h));
+    if (slab.size() < 3 || !(std::abs(signed_area(slab)) > 0.0)) throw InputError(place + ": slab", "the cut-backs leave no slab");
+    const double a = c.w0 + gap, b = c.w1 - gap;
+    if (revolute || !(b > a)) {
+      out.cams_skipped.push_back(static_cast<int>(k));
+      continue;
+    }
+    const double y_end = profile.back().y(), y_lo = -(y_end < 0.0 ? -1.0 : 1.0) * h / 2;
+    std::vector<Vec2> section{Vec2(x_base, y_lo), Vec2(profile.front().x(), y_lo)};
+    section.insert(section.end(), profile.begin(), profile.end());
+    section.emplace_back(x_base, y_end);
+    if (!simple_section(section))
+      throw InputError(place, "the cam's cross-section crosses itself (the profile doubles back over its closing lines)");
+    for (Vec2& p : section) p.x() *= mirror;  // back to the fold frame
+    cams.push_back({static_cast<int>(k), std::move(section), a, b});
+  }
+  add_prism(out, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), slab, -h / 2, h / 2);
+  for (std::size_t s = 0; s < cams.size(); ++s) {
+    const CamSide& c = input.cams[cams[s].index];
+    const Eigen::Vector3d e = c.x_axis.cross(ez);  // the prism's sweep direction
+    const double sense = e.dot(c.fold_direction) > 0.0 ? 1.0 : -1.0;
+    double a = sense * cams[s].a, b = sense * cams[s].b;
+    if (a > b) std::swap(a, b);
+    add_prism(out, static_cast<int>(s) + 1, c.origin, c.x_axis, ez, cams[s].section, a, b);
+    out.cam_of_shell.push_back(cams[s].index);
+  }
+  return out;
+}
+
+std::vector<Polygon3> transformed(const std::vector<Polygon3>& polygons, const Eigen::Isometry3d& pose) {
+  std::vector<Polygon3> out;
+  out.reserve(polygons.size());
+  for (const Polygon3& p : polygons) {
+    Polygon3 q;
+    q.reserve(p.size());
+    for (const Eigen::Vector3d& x : p) q.push_back(pose * x);
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+}  // namespace rigidfold::sorce

@@ -1,0 +1,76 @@
+#pragma once
+// Printable solids of SORCE panels (issue 16 outputs): each panel as closed, outward-oriented
+// polygon shells — its slab cut back from every fold that carries a cam, and one cam per
+// such fold: the fold's profile (sorce_profile.hpp) extruded along the crease — for binary
+// STL (polygons_stl in kernel/geometry/folded_output.hpp).
+//
+// Frame of a cam (the fold's normal plane, digest section 1): a point (x, y) of the profile
+// at distance w along the crease is origin + x * x_axis + y * e_z + w * fold_direction, in
+// the flat pattern's coordinates with the panel's mid-plane at z = 0 (its t = 0 pose; place
+// the shells at t by the panel's pose, offset included).
+//
+// Cam cross-section (left panel; the right one mirrored, x -> -x): the profile s(0) .. s(1)
+// closed through (x_base, y_e) and (x_base, y_lo), (s(0).x, y_lo), where y_e = s(1).y,
+// y_lo = -sgn(y_e) h / 2 (the slab face opposite the profile's end) and x_base lies `margin`
+// behind the profile's farthest point into the panel (never in front of the fold line). The
+// slab is the panel polygon clipped at x_base + overlap (toward the fold): it reaches
+// `overlap` into the cam, so the shells overlap and their union (what a slicer prints) is one
+// solid. Each cam is cut `vertex_gap` short of both ends of its crease, so the cams of
+// neighbouring folds do not meet at a vertex. A profile shorter than 1e-9 h (z = 0 on both
+// sides: a plain revolute) gets no cam; the slab is still cut back by `margin`.
+// Not built: clearance holes in a mate for a cam that protrudes beyond its own slab faces
+// (the fold report's protrusion_left/right says where one is needed).
+//
+// Units: the pattern's length units; thickness h and gaps in the same.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "design/sorce/sorce_profile.hpp"
+
+namespace rigidfold::sorce {
+
+using Polygon3 = std::vector<Eigen::Vector3d>;
+
+struct CamSide {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();          // on the crease line, z = 0
+  Eigen::Vector3d fold_direction = Eigen::Vector3d::UnitY();  // unit, along the crease, z = 0
+  Eigen::Vector3d x_axis = Eigen::Vector3d::UnitX();          // unit, in plane, from the left panel into the right
+  double w0 = 0.0, w1 = 1.0;  // the crease's extent along fold_direction from origin, w1 > w0
+  bool left = true;           // this panel is the fold's left panel (uses s_left) or its right one (s_right)
+  std::vector<Vec2> profile;  // this panel's profile points, t = 0 .. 1 (sample_profiles)
+};
+
+struct PanelSolidInput {
+  Polygon3 polygon;  // the flat panel, z = 0, counter-clockwise seen from +z, convex
+  double thickness = 0.0;
+  std::vector<CamSide> cams;
+};
+
+struct SolidOptions {
+  double margin = 0.1;       // x_base behind the profile, as a fraction of the thickness (> overlap)
+  double overlap = 0.05;     // slab reaching into the cam, fraction of the thickness (> 0)
+  double vertex_gap = -1.0;  // length cut off each end of a cam; < 0: the thickness
+};
+
+struct PanelSolid {
+  std::vector<Polygon3> polygons;  // every shell's polygons, outward (counter-clockwise about the outward normal)
+  std::vector<int> shell_of_polygon;  // 0 the slab, k the k-th cam built
+  // Volume of each shell (slab first) from its 2D cross-section's area: independent of the
+  // polygon assembly, so a mesh volume can be checked against it.
+  std::vector<double> shell_volumes;
+  std::vector<int> cam_of_shell;  // index into PanelSolidInput::cams per cam shell (shell k -> cams[cam_of_shell[k-1]])
+  std::vector<int> cams_skipped;  // cams with no solid: a plain revolute or a crease shorter than 2 gaps
+};
+
+// Throws InputError: "polygon" (< 3 points, not planar at z = 0, not convex and counter-
+// clockwise), "thickness" (<= 0), "options" (margin <= overlap or overlap <= 0),
+// "cams[k]" (a frame that is not orthonormal in the plane, w1 <= w0, fewer than 2 profile
+// points, or a cross-section that crosses itself - the profile doubles back over its own
+// closing lines), "cams[k]: slab" when the cut-backs leave no slab.
+PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options = {});
+
+// The polygons moved by a rigid motion (a panel's pose at some t).
+std::vector<Polygon3> transformed(const std::vector<Polygon3>& polygons, const Eigen::Isometry3d& pose);
+
+}  // namespace rigidfold::sorce
