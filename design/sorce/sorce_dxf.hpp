@@ -14,11 +14,7 @@
 
 namespace rigidfold::sorce {
 
-struct NamedFold {
-  std::string name;  // layer prefix: letters, digits, '_' or '-' only (DXF layer names)
-  FoldMotion motion;
-};
-
+// NamedFold::name is the layer prefix: letters, digits, '_' or '-' only (DXF layer names).
 // Throws InputError("samples") if samples < 2, InputError("folds[k].name") for an empty name
 // or one with other characters; passes on profile errors (gamma' = 0 somewhere).
 std::string fold_profiles_dxf(const std::vector<NamedFold>& folds, int samples = 201);

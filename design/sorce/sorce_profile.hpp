@@ -18,6 +18,7 @@
 //
 // Units: lengths in the caller's unit, angles radians (gamma > 0 valley), t in [0, 1].
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "design/sorce/sorce_function.hpp"
@@ -34,6 +35,12 @@ struct FoldMotion {
   VectorFunction d;        // split offset in the normal plane, in the left panel's frame
   double thickness_left = 0.0;   // slab thicknesses, for protrusion (0: not reported)
   double thickness_right = 0.0;
+};
+
+// A fold with a name for drawings (SVG label, DXF layer prefix), e.g. "fold 2" or "E17".
+struct NamedFold {
+  std::string name;
+  FoldMotion motion;
 };
 
 // The profile pair at one t with its first two derivatives in t, its signed curvature

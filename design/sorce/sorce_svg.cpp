@@ -1,11 +1,12 @@
 #include "design/sorce/sorce_svg.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <limits>
 #include <utility>
 #include <vector>
+
+#include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
 
@@ -67,6 +68,20 @@ std::string slab(double x_from, double x_to, double h, const char* cls, const Sv
   return out;
 }
 
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 std::string group(const FoldMotion& m, const Sampled& s, const SvgOptions& o, double dx, double dy) {
   std::string out = "<g class=\"fold\" transform=\"translate(" + num(dx) + "," + num(dy) + ") scale(1,-1)\">\n";
   out += slab(std::min(s.box.x0, 0.0), 0.0, m.thickness_left, "left-slab", o);
@@ -82,9 +97,10 @@ std::string fold_profiles_svg_group(const FoldMotion& motion, const SvgOptions& 
   return group(motion, sample(motion, options.samples), options, dx, dy);
 }
 
-std::string vertex_profiles_svg(const SorceVertex& v, const SvgOptions& o) {
-  std::array<Sampled, 4> s;
-  for (int j = 0; j < 4; ++j) s[j] = sample(v.folds[j], o.samples);
+std::string folds_profiles_svg(const std::vector<NamedFold>& folds, const SvgOptions& o) {
+  if (folds.empty()) throw InputError("folds", "no fold to draw");
+  std::vector<Sampled> s;
+  for (const NamedFold& f : folds) s.push_back(sample(f.motion, o.samples));
   double gap = 0.0, y_top = -std::numeric_limits<double>::infinity(), y_bottom = std::numeric_limits<double>::infinity();
   for (const Sampled& f : s) {
     gap = std::max(gap, 0.2 * (f.box.x1 - f.box.x0));
@@ -92,13 +108,14 @@ std::string vertex_profiles_svg(const SorceVertex& v, const SvgOptions& o) {
     y_bottom = std::min(y_bottom, f.box.y0);
   }
   const double height = y_top - y_bottom, label = 0.1 * height + 4 * o.stroke;
-  // Folds side by side: fold j's origin placed so its box starts where the previous ended.
+  // Folds side by side: each fold's origin placed so its box starts where the previous ended.
   std::string body;
   double x = 0.0;
-  for (int j = 0; j < 4; ++j) {
+  for (std::size_t j = 0; j < folds.size(); ++j) {
     const double dx = x - s[j].box.x0, dy = y_top + label;  // y flips: model y_top sits at the label's foot
-    body += "<text x=\"" + num(x) + "\" y=\"" + num(0.8 * label) + "\" font-size=\"" + num(0.6 * label) + "\">fold " + std::to_string(j + 1) + "</text>\n";
-    body += group(v.folds[j], s[j], o, dx, dy);
+    body += "<text x=\"" + num(x) + "\" y=\"" + num(0.8 * label) + "\" font-size=\"" + num(0.6 * label) + "\">" +
+            xml_escape(folds[j].name) + "</text>\n";
+    body += group(folds[j].motion, s[j], o, dx, dy);
     x += s[j].box.x1 - s[j].box.x0 + gap;
   }
   const double width = std::max(x - gap, o.stroke), total_height = height + label + 2 * o.stroke;
@@ -106,6 +123,12 @@ std::string vertex_profiles_svg(const SorceVertex& v, const SvgOptions& o) {
                     num(width * o.pixels_per_unit) + "\" height=\"" + num(total_height * o.pixels_per_unit) + "\">\n";
   out += "<style>.left{stroke:#1f5fbf}.right{stroke:#c0392b}.left-slab{stroke:#7fa7df}.right-slab{stroke:#df8f86}</style>\n";
   return out + body + "</svg>\n";
+}
+
+std::string vertex_profiles_svg(const SorceVertex& v, const SvgOptions& o) {
+  std::vector<NamedFold> folds;
+  for (int j = 0; j < 4; ++j) folds.push_back({"fold " + std::to_string(j + 1), v.folds[j]});
+  return folds_profiles_svg(folds, o);
 }
 
 }  // namespace rigidfold::sorce

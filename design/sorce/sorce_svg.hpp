@@ -11,6 +11,7 @@
 // flips y once, in a transform on the enclosing group, so polyline coordinates are the
 // model's. Samples are evenly spaced in t, both ends included (evaluated exactly).
 #include <string>
+#include <vector>
 
 #include "design/sorce/sorce_vertex.hpp"
 
@@ -28,8 +29,11 @@ struct SvgOptions {
 std::string fold_profiles_svg_group(const FoldMotion& motion, const SvgOptions& options, double dx = 0.0,
                                     double dy = 0.0);
 
-// A whole SVG document with the four folds of a vertex side by side (fold 1 leftmost), each
-// labelled "fold j".
+// A whole SVG document with the folds side by side in the order given, each labelled by its
+// name (XML-escaped). Throws InputError("folds") when there is none.
+std::string folds_profiles_svg(const std::vector<NamedFold>& folds, const SvgOptions& options = {});
+
+// The four folds of a vertex (fold 1 leftmost), labelled "fold j".
 std::string vertex_profiles_svg(const SorceVertex& vertex, const SvgOptions& options = {});
 
 }  // namespace rigidfold::sorce
