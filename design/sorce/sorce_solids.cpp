@@ -132,12 +132,24 @@ PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options
       out.cams_skipped.push_back(static_cast<int>(k));
       continue;
     }
-    const double y_end = profile.back().y(), y_lo = -(y_end < 0.0 ? -1.0 : 1.0) * h / 2;
+    // Closed around the profile's excursions: on the side opposite its end at the slab face or
+    // `margin` beyond the profile, whichever is farther; on its end's side at the end's height,
+    // or `margin` above the profile where it rises beyond its end.
+    const double y_end = profile.back().y(), sigma = y_end < 0.0 ? -1.0 : 1.0;
+    double below = 0.0, above = sigma * y_end;
+    for (const Vec2& p : profile) below = std::max(below, -sigma * p.y()), above = std::max(above, sigma * p.y());
+    const double y_lo = -sigma * std::max(h / 2, below > 0.0 ? below + options.margin * h : 0.0);
     std::vector<Vec2> section{Vec2(x_base, y_lo), Vec2(profile.front().x(), y_lo)};
     section.insert(section.end(), profile.begin(), profile.end());
-    section.emplace_back(x_base, y_end);
+    if (above > sigma * y_end) {
+      const double y_top = sigma * (above + options.margin * h);
+      section.emplace_back(profile.back().x(), y_top);
+      section.emplace_back(x_base, y_top);
+    } else {
+      section.emplace_back(x_base, y_end);
+    }
     if (!simple_section(section))
-      throw InputError(place, "the cam's cross-section crosses itself (the profile doubles back over its closing lines)");
+      throw InputError(place, "the cam's cross-section crosses itself (the profile crosses itself or the lines that close it)");
     for (Vec2& p : section) p.x() *= mirror;  // back to the fold frame
     cams.push_back({static_cast<int>(k), std::move(section), a, b});
   }

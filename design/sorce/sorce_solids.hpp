@@ -10,9 +10,11 @@
 // the shells at t by the panel's pose, offset included).
 //
 // Cam cross-section (left panel; the right one mirrored, x -> -x): the profile s(0) .. s(1)
-// closed through (x_base, y_e) and (x_base, y_lo), (s(0).x, y_lo), where y_e = s(1).y,
-// y_lo = -sgn(y_e) h / 2 (the slab face opposite the profile's end) and x_base lies `margin`
-// behind the profile's farthest point into the panel (never in front of the fold line). The
+// closed around its excursions - with sigma = sgn(y_e), y_e = s(1).y, from s(1) to x_base at
+// y_e (or first up to `margin` beyond the profile where it rises beyond y_e on sigma's side),
+// down to y_lo = -sigma max(h/2, the profile's reach on the other side + margin), and back to
+// (s(0).x, y_lo) - where x_base lies `margin` behind the profile's farthest point into the
+// panel (never in front of the fold line). The
 // slab is the panel polygon clipped at x_base + overlap (toward the fold): it reaches
 // `overlap` into the cam, so the shells overlap and their union (what a slicer prints) is one
 // solid. Each cam is cut `vertex_gap` short of both ends of its crease, so the cams of

@@ -150,11 +150,11 @@ TEST(SorceSolids, BadInputNamesThePlace) {
   thin.thickness = 0.0;
   EXPECT_NE(place(thin).find("thickness"), std::string::npos);
   EXPECT_NE(place(in, {0.05, 0.1, -1}).find("options"), std::string::npos);
-  // A profile that doubles back across its own closing line at y = -h/2.
+  // A profile that crosses itself (its first and third segments meet at (-0.02, 0.02)).
   PanelSolidInput loop = in;
   CamSide c;
   c.origin = Vector3d(1, 0, 0);
-  c.profile = {Vec2(0, 0), Vec2(-0.02, -0.2), Vec2(-0.04, 0.05)};
+  c.profile = {Vec2(0, 0), Vec2(-0.04, 0.04), Vec2(-0.04, 0), Vec2(0, 0.04)};
   loop.cams = {c};
   EXPECT_NE(place(loop).find("cams[0]"), std::string::npos);
   PanelSolidInput skew = in;
