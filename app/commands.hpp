@@ -26,5 +26,6 @@ void add_assignments_command(CLI::App& app);  // rigidfold assignments PATTERN [
 void add_energy_command(CLI::App& app);  // rigidfold energy PATTERN --rest REST [--k-m K --k-v K] [--json]
 void add_waterbomb_command(CLI::App& app);  // rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
 void add_thick_command(CLI::App& app);  // rigidfold thick PATTERN --thickness T [--hinges top|bottom|mid|valley|bennett] [--json] [--out THICK.fold] [--stl F.stl --at DEG]
+void add_sorce_command(CLI::App& app);  // rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--optimize] [--json] [--out DIR]
 
 }  // namespace rigidfold::cli

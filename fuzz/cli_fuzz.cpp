@@ -3,7 +3,8 @@
 //   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check|thick + flags
+//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check|thick|sorce + flags
+//   RIGIDFOLD_FUZZ_ENTRY 5  sorce_spec_fuzz     sorce VERTEX_A.fold --thickness 0.1 --offsets INPUT --out DIR
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
 // error", an exception that is not bad input) aborts, so libFuzzer reports it with the
 // input, like a crash.
@@ -21,7 +22,7 @@
 #include "app/commands.hpp"
 
 #ifndef RIGIDFOLD_FUZZ_ENTRY
-#error "define RIGIDFOLD_FUZZ_ENTRY (1..4)"
+#error "define RIGIDFOLD_FUZZ_ENTRY (1..5)"
 #endif
 
 namespace {
@@ -36,6 +37,8 @@ const std::string kPattern = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/
 // The bundled waterbomb base and its rest state, for the energy command's flags.
 const std::string kWaterbomb = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold";
 const std::string kWaterbombRest = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/energy/waterbomb_base_rest60.json";
+// The seed 002 vertex A, for the sorce command (its flags, and its --offsets SPEC.json).
+const std::string kVertexA = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/sorce/vertex_a.fold";
 // A flat-foldable Miura-ori, for the thick command's flags (every --hinges runs on it).
 const std::string kMiura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_4x4_alpha60.fold";
 
@@ -66,13 +69,14 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 // command. Tokens with '/' are dropped, so every path stays inside the private directory.
 // Flags whose only effect is more work of the same kind (waterbomb --curve/--samples: up to
 // 2001 loaded equilibria on a 360-crease vertex; energy --starts: up to 1000 minimisations)
+// and sorce --optimize/--steps: a search of ~200 joint designs, a trace of up to 2000 steps)
 // are dropped too, and waterbomb --n is held at most 24 (n = 180 checks each state on a
 // 360-crease vertex: ~6 s in Release, far more under ASan): a legal run of minutes would count
 // as a libFuzzer timeout (-timeout=30).
 std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"rigidfold"};
   if (size == 0) return args;
-  switch (data[0] % 9) {
+  switch (data[0] % 10) {
     case 0: args.insert(args.end(), {"generate"}); break;
     case 1: args.insert(args.end(), {"trace", kPattern}); break;
     case 2: args.insert(args.end(), {"trace", kPattern, "--general"}); break;
@@ -81,11 +85,13 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     case 5: args.insert(args.end(), {"assignments", kPattern}); break;
     case 6: args.insert(args.end(), {"energy", kWaterbomb, "--rest", kWaterbombRest}); break;
     case 8: args.insert(args.end(), {"thick", kMiura}); break;
+    case 9: args.insert(args.end(), {"sorce", kVertexA}); break;
     default: args.insert(args.end(), {"check", kPattern}); break;
   }
   std::string token;
   const auto flush = [&] {
-    const bool costly = token.rfind("--curve", 0) == 0 || token.rfind("--samples", 0) == 0 || token.rfind("--starts", 0) == 0;
+    const bool costly = token.rfind("--curve", 0) == 0 || token.rfind("--samples", 0) == 0 || token.rfind("--starts", 0) == 0 ||
+                        token.rfind("--optimize", 0) == 0 || token.rfind("--steps", 0) == 0;
     if (!token.empty() && !costly && token.find('/') == std::string::npos && token.find('\0') == std::string::npos &&
         args.size() < 24)
       args.push_back(token);
@@ -133,6 +139,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 3:
       write_input(data, size);
       args = {"rigidfold", "string", "design", input, "--out", out};
+      break;
+    case 5:
+      write_input(data, size);
+      args = {"rigidfold", "sorce", kVertexA, "--thickness", "0.1", "--drive", "1", "--to", "180", "--offsets", input, "--out",
+              in_private("sorce")};
       break;
     default:
       args = flag_args(data, size);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross
 #include <array>
 #include <cstdint>
 #include <cstring>

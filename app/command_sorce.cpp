@@ -1,0 +1,367 @@
+// rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--optimize [--epsilon E]
+//                 [--max-protrusion P] [--max-s0 S]] [--drive E] [--to DEG] [--steps N]
+//                 [--at T] [--samples N] [--json] [--out DIR]
+// SORCE rolling-contact joints (seed 002) for every folding crease of a pattern, on the path
+// the general solver traces (design/sorce/sorce_design.hpp, the front door): per crease its
+// profile pair's diagnostics, per face its offset, the pattern's verification figures, and
+// with --optimize the offset coefficients searched for the figure of merit.
+// --out DIR writes:
+//   sorce.json      the JSON printed by --json
+//   profiles.svg    every folding crease's profile pair side by side ("E<edge>")
+//   profiles.dxf    the same as DXF polylines, true coordinates, layers E<edge>_LEFT/_RIGHT/_SLAB
+//   panel_F.stl     panel F (face index) as slab + cams (design/sorce/sorce_solids.hpp) in its
+//                   flat pose, one closed file per panel for printing (none, with the reason in
+//                   the JSON, when a panel cannot be built: not convex, a cam section that
+//                   crosses itself)
+//   panels_at.stl   every panel placed at t = --at, for viewing (only with --at; mating cams
+//                   touch along their contact lines there)
+//   frames.fold     the panels' mid-planes, one frame per pose time (sorce_frames.hpp)
+//   poses.csv       the pose table P_f(t)
+// Nothing is printed or written unless the joints pass their checks (rolling and contact
+// residuals, 3D consistency, vertex closure and contact; design/sorce/sorce_checks.hpp):
+// otherwise exit 3. Lengths in the pattern file's units.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "app/number_flags.hpp"
+#include "app/provenance.hpp"
+#include "app/summary_stream.hpp"
+#include "design/sorce/sorce_checks.hpp"
+#include "design/sorce/sorce_design.hpp"
+#include "design/sorce/sorce_dxf.hpp"
+#include "design/sorce/sorce_frames.hpp"
+#include "design/sorce/sorce_offsets_spec.hpp"
+#include "design/sorce/sorce_solids.hpp"
+#include "design/sorce/sorce_svg.hpp"
+#include "kernel/geometry/folded_output.hpp"
+#include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/pattern/output_set.hpp"
+#include "kernel/pattern/read_pattern.hpp"
+
+namespace rigidfold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+using namespace rigidfold::sorce;
+
+Json spans(const std::vector<Span>& s) {
+  Json a = Json::array();
+  for (const Span& x : s) a.push_back({x.begin, x.end});
+  return a;
+}
+
+// TEMPORARY until InputError::message() lands.
+std::string message_of(const InputError& e) { return std::string(e.what()).substr(e.place().empty() ? 0 : e.place().size() + 2); }
+
+// Infinite convexities (pivots, cusps) as null: JSON has no infinity.
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(); }
+
+Json crease_json(const CreaseJoint& j) {
+  const FoldReport& r = j.report;
+  Json c;
+  c["edge"] = j.edge;
+  c["left_face"] = j.left_face;
+  c["right_face"] = j.right_face;
+  c["folds"] = j.folds;
+  if (!j.folds) return c;
+  c["s0"] = r.s0;
+  c["arc_length"] = {r.arc_length_left, r.arc_length_right};
+  c["convexity_left"] = {finite_or_null(r.min_convexity_left), finite_or_null(r.max_convexity_left)};
+  c["convexity_right"] = {finite_or_null(r.min_convexity_right), finite_or_null(r.max_convexity_right)};
+  c["concave_left"] = spans(r.concave_left);
+  c["concave_right"] = spans(r.concave_right);
+  c["cusps"] = r.cusps;
+  c["ill_behaved"] = r.ill_behaved;
+  c["stationary"] = r.stationary;
+  c["pivot_at_start"] = r.pivot_at_start;
+  c["pivot_at_end"] = r.pivot_at_end;
+  c["protrusion"] = {r.protrusion_left, r.protrusion_right};
+  c["rolling_residual"] = r.max_rolling_residual;
+  c["contact_residual"] = r.max_contact_residual;
+  c["end_separation"] = r.end_separation;
+  c["stacks"] = r.stacks;
+  c["consistency"] = j.consistency;
+  c["pitch"] = j.pitch;
+  c["contact_3d"] = j.contact;
+  return c;
+}
+
+Json checks_json(const PatternChecks& k) {
+  Json c;
+  c["consistency"] = k.consistency;
+  c["pitch"] = k.pitch;
+  c["closure_knots"] = k.closure_knots;
+  c["closure_samples"] = k.closure_samples;
+  c["contact_3d"] = k.contact;
+  c["rolling_residual"] = k.rolling;
+  c["contact_residual"] = k.contact_planar;
+  c["flat_folded_end"] = k.flat_folded_end;
+  c["all_stack"] = k.all_stack;
+  Json inter = Json::array();
+  for (const SlabInterference& s : k.interference)
+    for (const auto& [a, b] : s.face_pairs) inter.push_back({{"t", s.t}, {"faces", {a, b}}});
+  c["slab_interference"] = inter;
+  c["interference_skipped_faces"] = k.skipped_faces;
+  return c;
+}
+
+// Every panel as slab + cams, in its t = 0 pose (flat coordinates). Throws InputError from
+// panel_solid (a non-convex panel, a self-crossing cam section).
+std::vector<PanelSolid> panel_solids(const CreasePattern& p, const PatternSorce& s, int samples) {
+  std::vector<PanelSolidInput> in(p.num_faces());
+  for (int f = 0; f < p.num_faces(); ++f) {
+    for (int v : p.faces[f]) in[f].polygon.push_back(p.vertices[v]);
+    in[f].thickness = s.faces[f].thickness;
+  }
+  for (const CreaseJoint& j : s.creases) {
+    if (!j.folds) continue;
+    const SampledProfiles prof = sample_profiles(j.motion, samples);
+    const Eigen::Vector3d a = p.vertices[p.edges[j.edge][0]], b = p.vertices[p.edges[j.edge][1]];
+    for (bool left : {true, false}) {
+      CamSide c;
+      c.origin = a;
+      c.fold_direction = (b - a).normalized();
+      c.x_axis = j.frame.linear().col(0);
+      c.w0 = 0.0;
+      c.w1 = (b - a).norm();
+      c.left = left;
+      c.profile = left ? prof.left : prof.right;
+      in[left ? j.left_face : j.right_face].cams.push_back(c);
+    }
+  }
+  std::vector<PanelSolid> out;
+  for (int f = 0; f < p.num_faces(); ++f) {
+    try {
+      out.push_back(panel_solid(in[f]));
+    } catch (const InputError& e) {
+      throw InputError("faces[" + std::to_string(f) + "]: " + e.place(), message_of(e));
+    }
+  }
+  return out;
+}
+
+std::vector<Polygon3> placed_panels(const std::vector<PanelSolid>& solids, const std::vector<Eigen::Isometry3d>& poses) {
+  std::vector<Polygon3> all;
+  for (std::size_t f = 0; f < solids.size(); ++f) {
+    const std::vector<Polygon3> moved = transformed(solids[f].polygons, poses[f]);
+    all.insert(all.end(), moved.begin(), moved.end());
+  }
+  return all;
+}
+
+}  // namespace
+
+void add_sorce_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("sorce", "SORCE rolling-contact joints for thick panels (seed 002) on the traced folding path");
+  struct Args {
+    std::string pattern, offsets = "linear", out;
+    double thickness = 0, epsilon = 0, max_protrusion = -1, max_s0 = -1, to = 0, at = -1;
+    int drive = -1, steps = 40, samples = 201;
+    bool optimize = false, json = false, to_given = false;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("pattern", a->pattern, "crease pattern (.fold, .svg, .opx), flat")->required();
+  cmd->add_option("--thickness", a->thickness, "every panel's thickness (> 0, the pattern's length units)")
+      ->required()
+      ->check(finite_number());
+  cmd->add_option("--offsets", a->offsets,
+                  "linear (z_f = z_f(1) t, z_f(1) by the stacking rule; default) or SPEC.json: {\"end_offsets\": [per face], "
+                  "\"coefficients\": [[b1, b2, b3] per face]}");
+  cmd->add_flag("--optimize", a->optimize, "search the faces' offset coefficients for the figure of merit (NLopt COBYLA)");
+  cmd->add_option("--epsilon", a->epsilon, "with --optimize: smallest convexity allowed (1/length, >= 0)")->check(finite_in(0, 1e300));
+  cmd->add_option("--max-protrusion", a->max_protrusion, "with --optimize: bound on every cam's protrusion (length, >= 0)")
+      ->check(finite_in(0, 1e300));
+  cmd->add_option("--max-s0", a->max_s0, "with --optimize: bound on every |s0| (length, >= 0)")->check(finite_in(0, 1e300));
+  cmd->add_option("--drive", a->drive, "driving crease (edge index; default: the general solver's choice)")->check(CLI::NonNegativeNumber);
+  auto* to = cmd->add_option("--to", a->to,
+                             "driving crease's final fold angle, t = 1 (degrees, signed; default 170 in its letter's direction; "
+                             "+-180 for joints that reach the flat-folded state)")
+                 ->check(finite_in(-180, 180, "degrees"));
+  cmd->add_option("--steps", a->steps, "traced steps (8..2000; the path is a quintic spline through them)")->check(CLI::Range(8, 2000));
+  cmd->add_option("--at", a->at, "with --out: also write the panels placed at this t (0..1) as panels_at.stl")
+      ->check(finite_in(0, 1));
+  cmd->add_option("--samples", a->samples, "points per profile in the drawings and solids (8..20000)")->check(CLI::Range(8, 20000));
+  cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
+  cmd->add_option("--out", a->out, "directory for sorce.json, profiles.svg/.dxf, panels.stl, frames.fold, poses.csv");
+  cmd->callback([a, to] {
+    OutputSet outputs;
+    outputs.add_input("PATTERN", a->pattern);
+    const bool spec_given = a->offsets != "linear";
+    if (spec_given) outputs.add_input("--offsets", a->offsets);
+    const fs::path dir(a->out);
+    auto out_file = [&](const char* name) { return (dir / name).string(); };
+    const std::vector<std::string> names{"sorce.json", "profiles.svg", "profiles.dxf", "frames.fold", "poses.csv"};
+    if (!a->out.empty()) {
+      outputs.add_output_directory("--out", a->out);
+      for (const std::string& n : names) outputs.add_output("--out", out_file(n.c_str()));
+      if (a->at >= 0) outputs.add_output("--out", out_file("panels_at.stl"));
+    } else if (a->at >= 0) {
+      throw InputError("--at", "needs --out DIR");
+    }
+    if (!a->optimize && (a->epsilon != 0 || a->max_protrusion >= 0 || a->max_s0 >= 0))
+      throw InputError("--optimize", "--epsilon, --max-protrusion and --max-s0 bound the search: give --optimize");
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
+
+    const CreasePattern p = read_pattern(a->pattern);
+    if (p.length_exponent != 0)
+      throw InputError(a->pattern, "its size lies outside [2^-20, 2^20] length units: rescale the file for SORCE drawings");
+    SorceDesignRequest rq;
+    rq.sorce.thickness = a->thickness;
+    if (!(a->thickness > 0)) throw InputError("--thickness", "must be > 0");
+    if (spec_given) {
+      const OffsetSpec spec = parse_offset_spec(read_input_file(a->offsets), a->offsets, p.num_faces());
+      rq.sorce.end_offsets = spec.end_offsets;
+      rq.sorce.offset_coefficients = spec.coefficients;
+    }
+    if (a->drive >= 0) rq.sorce.trace.drive = a->drive;
+    if (to->count() > 0) {
+      if (a->to == 0) throw InputError("--to", "must not be 0");
+      rq.sorce.trace.to = to_radians(a->to);
+    }
+    rq.sorce.trace.steps = a->steps;
+    rq.sorce.pose_times = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+    if (a->at >= 0 && std::find(rq.sorce.pose_times.begin(), rq.sorce.pose_times.end(), a->at) == rq.sorce.pose_times.end()) {
+      rq.sorce.pose_times.push_back(a->at);
+      std::sort(rq.sorce.pose_times.begin(), rq.sorce.pose_times.end());
+    }
+    rq.optimize = a->optimize;
+    rq.epsilon = a->epsilon;
+    if (a->max_protrusion >= 0) rq.max_protrusion = a->max_protrusion;
+    if (a->max_s0 >= 0) rq.max_abs_s0 = a->max_s0;
+
+    SorceDesign d;
+    try {
+      d = sorce_design(p, rq);
+    } catch (const InputError& e) {
+      // The design layer's places, as the user gave them.
+      const std::string& place = e.place();
+      if (place == "thickness") throw InputError("--thickness", message_of(e));
+      if (place == "drive") throw InputError("--drive", message_of(e));
+      if (place == "to") throw InputError("--to", message_of(e));
+      if (place == "pattern" || place == "branch") throw InputError(a->pattern, message_of(e));
+      if (place.rfind("end_offsets", 0) == 0 || place.rfind("offset_coefficients", 0) == 0)
+        throw InputError((spec_given ? a->offsets : a->pattern) + ": " + place, message_of(e));
+      throw;
+    }
+    const PatternSorce& s = d.sorce;
+    // Nothing is reported before the joints pass their own checks.
+    const SorceCheckVerdict verdict = check_sorce(p, s);
+    if (!verdict.passed) throw NoAnswerError("the SORCE joints fail their check: " + verdict.failure, verdict.worst);
+
+    Json j;
+    j["file"] = a->pattern;
+    j["thickness"] = a->thickness;
+    Json path;
+    path["driving_crease"] = s.path.drive;
+    path["final_drive_deg"] = to_degrees(s.path.final_drive);
+    path["knots"] = s.path.knots.size();
+    path["parameter"] = "t = drive / final drive, quintic spline per crease";
+    j["path"] = path;
+    Json faces = Json::array();
+    for (std::size_t f = 0; f < s.faces.size(); ++f)
+      faces.push_back({{"face", f}, {"end_offset", s.faces[f].end_value}, {"thickness", s.faces[f].thickness}});
+    j["faces"] = faces;
+    Json creases = Json::array();
+    std::vector<FoldReport> reports;
+    for (const CreaseJoint& c : s.creases) {
+      creases.push_back(crease_json(c));
+      if (c.folds) reports.push_back(c.report);
+    }
+    j["creases"] = creases;
+    j["figure_of_merit"] = finite_or_null(figure_of_merit(reports, rq.epsilon));
+    j["checks"] = checks_json(s.checks);
+    Json bounds = Json::object();
+    for (const auto& [name, bound] : verdict.bounds) bounds[name] = bound;
+    j["check_bounds"] = bounds;
+    if (d.optimization) {
+      const OffsetDesign& o = *d.optimization;
+      Json opt;
+      opt["algorithm"] = o.algorithm;
+      opt["stop_reason"] = o.stop_reason;
+      opt["evaluations"] = o.evaluations;
+      opt["feasible"] = o.feasible;
+      opt["improved"] = o.improved;
+      opt["figure_of_merit"] = finite_or_null(o.fom);
+      opt["min_convexity"] = finite_or_null(o.min_convexity);
+      opt["faces"] = d.design_faces;
+      opt["coefficients"] = o.b;
+      Json binding = Json::array();
+      for (const BindingConstraint& b : o.binding)
+        binding.push_back({{"name", b.name}, {"index", b.index}, {"value", b.value}, {"bound", b.bound}});
+      opt["binding"] = binding;
+      j["optimization"] = opt;
+    }
+
+    if (!a->out.empty()) {
+      std::vector<NamedFold> folds;
+      for (const CreaseJoint& c : s.creases)
+        if (c.folds) folds.push_back({"E" + std::to_string(c.edge), c.motion});
+      if (folds.empty()) throw InputError(a->pattern, "no crease folds on the traced path: no joint to draw");
+      SvgOptions svg;
+      svg.samples = a->samples;
+      svg.stroke = a->thickness / 50;
+      outputs.stage(out_file("profiles.svg"), folds_profiles_svg(folds, svg));
+      outputs.stage(out_file("profiles.dxf"), fold_profiles_dxf(folds, a->samples));
+      PoseFrames frames;
+      frames.times = s.pose_times;
+      frames.poses = s.poses;
+      for (double t : s.pose_times) {
+        Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
+        for (int e = 0; e < p.num_edges(); ++e) rho[e] = s.path.rho[e](t)[0];
+        frames.fold_angles.push_back(rho);
+      }
+      outputs.stage(out_file("frames.fold"), write_fold_string(exploded_frames(p, frames)));
+      outputs.stage(out_file("poses.csv"), pose_table_csv(p, frames));
+      Json files = Json::object();
+      std::vector<PanelSolid> solids;
+      try {
+        solids = panel_solids(p, s, a->samples);
+      } catch (const InputError& e) {
+        j["stl_note"] = std::string("no STL: ") + e.what();
+      }
+      if (!solids.empty()) {
+        Json panels = Json::array();
+        for (int f = 0; f < p.num_faces(); ++f) {
+          const std::string name = out_file(("panel_" + std::to_string(f) + ".stl").c_str());
+          outputs.add_output("--out", name);
+          outputs.stage(name, polygons_stl(solids[f].polygons, p.length_exponent, "rigidfold sorce panel (binary STL)"));
+          panels.push_back(name);
+        }
+        files["panels"] = panels;
+        if (a->at >= 0) {
+          const auto k = std::find(s.pose_times.begin(), s.pose_times.end(), a->at) - s.pose_times.begin();
+          outputs.stage(out_file("panels_at.stl"), polygons_stl(placed_panels(solids, s.poses[k]), p.length_exponent,
+                                                                "rigidfold sorce panels placed at --at (binary STL)"));
+          files["panels_at"] = out_file("panels_at.stl");
+        }
+      }
+      for (const char* n : {"profiles.svg", "profiles.dxf", "frames.fold", "poses.csv"}) files[n] = out_file(n);
+      j["out"] = files;
+      outputs.stage(out_file("sorce.json"), with_provenance(j).dump(2) + "\n");
+    }
+    outputs.commit();
+    if (a->json) {
+      std::cout << with_provenance(j).dump(2) << "\n";
+      return;
+    }
+    std::cout << a->pattern << ": SORCE joints on " << reports.size() << " folding crease(s), thickness " << a->thickness << "\n";
+    std::cout << "  path: crease " << s.path.drive << " to " << to_degrees(s.path.final_drive) << " deg, " << s.path.knots.size()
+              << " knots\n";
+    std::cout << "  figure of merit " << j["figure_of_merit"].dump() << ", flat-folded end " << (s.checks.flat_folded_end ? "yes" : "no")
+              << ", all stack " << (s.checks.all_stack ? "yes" : "no") << "\n";
+    if (d.optimization) std::cout << "  optimised: figure of merit " << j["optimization"]["figure_of_merit"].dump() << ", feasible "
+                                  << (d.optimization->feasible ? "yes" : "no") << "\n";
+    if (!a->out.empty()) std::cout << "  wrote " << a->out << "\n";
+  });
+}
+
+}  // namespace rigidfold::cli

@@ -1,0 +1,139 @@
+// `rigidfold sorce` (app/command_sorce.cpp): SORCE joints on the bundled 4 x 4 Miura-ori
+// traced by the general solver to the flat-folded state: every folding crease gets a joint
+// whose checks are within the bounds the JSON states; --out writes one closed, outward STL
+// per panel (each directed edge once and its reverse once) whose volumes add up to the
+// assembled panels' at --at (a rigid placement keeps volume), a multi-frame FOLD that reads
+// back, the pose table and the drawings; --optimize reports its search; bad input exits 2
+// naming the flag, file or JSON pointer and writes nothing.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "kernel/pattern/fold_io.hpp"
+#include "tests/support/run_command.hpp"
+#include "tests/support/stl_mesh.hpp"
+
+namespace rigidfold {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSource = std::string(RIGIDFOLD_SOURCE_DIR) + "/";
+const std::string kMiura = kSource + "data/bundled/miura_4x4_alpha60.fold";
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("rigidfold_sorce_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
+  const fs::path out = scratch("miura");
+  fs::remove_all(out);
+  const auto r = test::run_command(test::cli() + " sorce " + kMiura + " --thickness 0.05 --drive 4 --to=-180 --steps 30 --at 0.5 --json --out " +
+                                   out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(j, nlohmann::ordered_json::parse(slurp(out / "sorce.json")));  // the file is what was printed
+  int folding = 0;
+  for (const auto& c : j["creases"]) {
+    if (!c["folds"].get<bool>()) continue;
+    ++folding;
+    EXPECT_NEAR(c["arc_length"][0].get<double>(), c["arc_length"][1].get<double>(), 1e-10) << c["edge"];  // rolling without slip
+  }
+  EXPECT_EQ(folding, 24);
+  for (const auto& [name, bound] : j["check_bounds"].items()) EXPECT_LE(j["checks"][name].get<double>(), bound.get<double>()) << name;
+  EXPECT_FALSE(j.contains("stl_note")) << j["stl_note"];
+
+  // One closed, outward STL per panel; together they fill what the assembly at t = 0.5 fills.
+  double panels_volume = 0.0;
+  ASSERT_EQ(j["out"]["panels"].size(), 16u);
+  for (const auto& f : j["out"]["panels"]) {
+    const auto tris = testing::parse_stl(slurp(f.get<std::string>()));
+    EXPECT_EQ(testing::open_or_misoriented_edges(tris), 0) << f;
+    const double v = testing::enclosed_volume(tris);
+    EXPECT_GT(v, 0.0) << f;
+    panels_volume += v;
+  }
+  const auto assembled = testing::parse_stl(slurp(out / "panels_at.stl"));
+  EXPECT_NEAR(testing::enclosed_volume(assembled), panels_volume, 1e-5 * panels_volume);
+
+  // The frames read back as FOLD: 16 panels of their own, 11 frames (t = 0, 0.1, ..., 1).
+  const CreasePattern frames = read_fold((out / "frames.fold").string());
+  EXPECT_EQ(frames.num_faces(), 16);
+  ASSERT_TRUE(frames.extra.contains("file_frames"));
+  EXPECT_EQ(frames.extra["file_frames"].size(), 11u);
+  EXPECT_EQ(frames.extra["file_frames"][5]["rigidfold:sorce_t"].get<double>(), 0.5);
+  // Pose table: a header and one row per (t, face).
+  const std::string csv = slurp(out / "poses.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 11 * 16);
+  EXPECT_NE(slurp(out / "profiles.dxf").find("E4_LEFT"), std::string::npos);
+  EXPECT_NE(slurp(out / "profiles.svg").find(">E4<"), std::string::npos);
+  EXPECT_TRUE(j.contains("provenance"));
+  fs::remove_all(out);
+}
+
+TEST(SorceCli, OptimizeReportsItsSearch) {
+  const fs::path pattern = scratch("m23.fold");
+  ASSERT_EQ(test::run_command(test::cli() + " generate miura --rows 2 --cols 3 --out " + pattern.string()).status, 0);
+  const auto r = test::run_command(test::cli() + " sorce " + pattern.string() + " --thickness 0.05 --to=-180 --optimize --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  const auto& o = j["optimization"];
+  EXPECT_EQ(o["algorithm"], "LN_COBYLA");
+  EXPECT_GT(o["evaluations"].get<int>(), 1);
+  EXPECT_EQ(o["coefficients"].size(), 3 * o["faces"].size());
+  fs::remove(pattern);
+}
+
+TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
+  const fs::path out = scratch("never");
+  fs::remove_all(out);
+  auto spec = [](const std::string& name, const std::string& text) {
+    const fs::path p = scratch(name);
+    std::ofstream(p) << text;
+    return p.string();
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {kMiura + " --thickness 0", "--thickness"},
+      {kMiura + " --thickness nan", "--thickness"},
+      {kMiura + " --thickness 0.05 --at 0.5", "--at"},
+      {kMiura + " --thickness 0.05 --at 2 --out " + out.string(), "--at"},
+      {kMiura + " --thickness 0.05 --epsilon 0.1", "--optimize"},
+      {kMiura + " --thickness 0.05 --drive 999", "--drive"},
+      {kMiura + " --thickness 0.05 --steps 3", "--steps"},
+      {kMiura + " --thickness 0.05 --to 0", "--to"},
+      {kMiura + " --thickness 0.05 --offsets " + spec("a.json", "{\"end_offset\": []}") + " --out " + out.string(), "a.json: /end_offset"},
+      {kMiura + " --thickness 0.05 --offsets " + spec("b.json", "{\"end_offsets\": [1, 2]}") + " --out " + out.string(), "b.json: /end_offsets"},
+      {kMiura + " --thickness 0.05 --offsets " + spec("c.json", "{\"coefficients\": [[1, \"x\"]]}"), "c.json: /coefficients"},
+      {kMiura + " --thickness 0.05 --offsets " + spec("d.json", "[1,"), "d.json"},
+      {kMiura + " --thickness 0.05 --offsets " + scratch("missing.json").string(), "missing.json"},
+      {kMiura + " --thickness 0.05 --out " + kMiura, "--out"},
+      {kSource + "data/bundled/miura_12x12_folded.fold --thickness 0.05", "miura_12x12_folded.fold"},
+  };
+  for (const auto& [args, place] : cases) {
+    const auto r = test::run_command(test::cli() + " sorce " + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(place), std::string::npos) << args << "\n" << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(out.parent_path());
+}
+
+}  // namespace
+}  // namespace rigidfold
