@@ -308,7 +308,8 @@ void add_sorce_command(CLI::App& app) {
       if (folds.empty()) throw InputError(a->pattern, "no crease folds on the traced path: no joint to draw");
       SvgOptions svg;
       svg.samples = a->samples;
-      svg.stroke = a->thickness / 50;
+      svg.width_px = 1600;
+      svg.stroke = a->thickness / 40;
       outputs.stage(out_file("profiles.svg"), folds_profiles_svg(folds, svg));
       outputs.stage(out_file("profiles.dxf"), fold_profiles_dxf(folds, a->samples));
       PoseFrames frames;

@@ -76,6 +76,14 @@ for f in data/bundled/*.fold; do
   [ "$name" = miura_tube_6_alpha60 ] && continue
   ./build/app/rigidfold export "$f" --svg "out/report/export/$name.svg" --dxf "out/report/export/$name.dxf" >/dev/null
 done
+# SORCE rolling-contact joints (seed 002) on the path traced by the general solver: the seed's
+# vertex A with linear offsets (eq 27's end values from the stacking rule) and the bundled 4x4
+# Miura folded flat; per crease its profile pair (profiles.svg/.dxf), one printable STL per
+# panel, the panels at t = 0.5, frames.fold and poses.csv (`rigidfold sorce`).
+./build/app/rigidfold sorce data/sorce/vertex_a.fold --thickness 0.1 --drive 1 --to 180 --at 0.5 \
+  --out out/report/sorce/vertex_a >/dev/null
+./build/app/rigidfold sorce data/bundled/miura_4x4_alpha60.fold --thickness 0.05 --drive 4 --to=-180 --at 0.5 \
+  --out out/report/sorce/miura_4x4 >/dev/null
 # The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
 # playable from out/report/viewer/index.html, and a screenshot of it (type2m.png).
 bash viewer/main_job.sh out/report

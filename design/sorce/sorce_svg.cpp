@@ -119,8 +119,9 @@ std::string folds_profiles_svg(const std::vector<NamedFold>& folds, const SvgOpt
     x += s[j].box.x1 - s[j].box.x0 + gap;
   }
   const double width = std::max(x - gap, o.stroke), total_height = height + label + 2 * o.stroke;
+  const double ppu = o.width_px > 0 ? o.width_px / width : o.pixels_per_unit;
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(width) + " " + num(total_height) + "\" width=\"" +
-                    num(width * o.pixels_per_unit) + "\" height=\"" + num(total_height * o.pixels_per_unit) + "\">\n";
+                    num(width * ppu) + "\" height=\"" + num(total_height * ppu) + "\">\n";
   out += "<style>.left{stroke:#1f5fbf}.right{stroke:#c0392b}.left-slab{stroke:#7fa7df}.right-slab{stroke:#df8f86}</style>\n";
   return out + body + "</svg>\n";
 }

@@ -20,6 +20,7 @@ namespace rigidfold::sorce {
 struct SvgOptions {
   int samples = 201;           // points per profile, >= 2
   double pixels_per_unit = 100;  // width/height attributes; the viewBox stays in model units
+  double width_px = 0;           // > 0: pixels_per_unit chosen so that the drawing is this wide
   double stroke = 0.01;        // line width, model units
 };
 
