@@ -98,6 +98,10 @@ TEST(SorcePattern, SingleVertexReproducesTheAnalyticVertex) {
     }
   }
   std::printf("vertex A vs analytic: gamma %.2e, profiles %.2e (h = %.2f)\n", err_gamma, err_profile, h);
+  // Measured with 40 steps: gamma 9.2e-07, profiles 2.7e-07 (the spline's error, see
+  // sorce_path_spline_test.cpp; the trace's own samples agree with eq 25 to ~1e-14).
+  EXPECT_LE(err_gamma, 2e-6);
+  EXPECT_LE(err_profile, 6e-7);
 }
 
 const std::string kBundled = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/";
@@ -114,6 +118,7 @@ TEST(SorcePattern, MiuraFoldedFlatStacksAndCloses) {
   print_checks("miura 4x4", s);
   EXPECT_EQ(s.creases.size(), 24u);
   expect_verified(s);
+  for (const auto& i : s.checks.interference) EXPECT_TRUE(i.face_pairs.empty()) << i.t;
   // The general solver stops the flat fold just short of pi (its fold-limit end, "clamped"), so
   // the reports' stacking test (|gamma(1)| = pi within 1e-12) does not apply; the end offsets
   // satisfy every crease's stacking condition all the same (margin 0: the binding ones are tight).
@@ -124,6 +129,26 @@ TEST(SorcePattern, MiuraFoldedFlatStacksAndCloses) {
   ASSERT_EQ(s.poses.size(), 11u);
   ASSERT_EQ(s.poses[0].size(), 16u);
   for (int f = 0; f < 16; ++f) EXPECT_LE((s.poses[0][f].matrix() - Eigen::Matrix4d::Identity()).cwiseAbs().maxCoeff(), 1e-15);
+}
+
+// The slab check sees interference where there is some: with every offset 0 (plain revolute
+// joints at the zero-thickness creases) the thick Miura's layers pass through each other as it
+// folds flat; with the stacking offsets they do not.
+TEST(SorcePattern, SlabCheckFindsZeroOffsetLayersInterfering) {
+  const CreasePattern p = read_fold(kBundled + "miura_4x4_alpha60.fold");
+  PatternSorceRequest rq;
+  rq.thickness = 0.05;
+  rq.trace.drive = 4;
+  rq.trace.to = -M_PI;
+  rq.trace.steps = 30;
+  rq.report.samples = 101;
+  rq.end_offsets.assign(16, 0.0);
+  const PatternSorce s = pattern_sorce(p, rq);
+  ASSERT_EQ(s.checks.interference.size(), 21u);
+  EXPECT_TRUE(s.checks.interference.front().face_pairs.empty());  // flat: slabs side by side
+  EXPECT_FALSE(s.checks.interference.back().face_pairs.empty());
+  std::printf("zero offsets: %zu interfering pairs at t = 1\n", s.checks.interference.back().face_pairs.size());
+  EXPECT_LT(s.checks.stacking_margin, 0.0);
 }
 
 TEST(SorcePattern, SquareTwistOverItsTracedRange) {
