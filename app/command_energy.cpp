@@ -61,12 +61,12 @@ void add_energy_command(CLI::App& app) {
       found = crease_spring_states(p, t, problem);
     } catch (const InputError& e) {
       // The kernel names its parameters; the user typed flags.
-      if (e.place() == "starts") throw InputError("--starts", std::string(e.what()).substr(e.place().size() + 2));
+      if (e.place() == "starts") throw InputError("--starts", e.message());
       if (e.place().rfind("stiffness.", 0) == 0) {
         const std::string flag = e.place() == "stiffness.mountain" ? "--k-m" : e.place() == "stiffness.valley" ? "--k-v" : "--k-u";
         throw InputError(flag, "must be a finite number >= 0");
       }
-      if (e.place() == "pattern") throw InputError(a->pattern, std::string(e.what()).substr(e.place().size() + 2));
+      if (e.place() == "pattern") throw InputError(a->pattern, e.message());
       throw;
     }
     const StableStateSearch& s = found.search;

@@ -59,9 +59,6 @@ Json spans(const std::vector<Span>& s) {
   return a;
 }
 
-// TEMPORARY until InputError::message() lands.
-std::string message_of(const InputError& e) { return std::string(e.what()).substr(e.place().empty() ? 0 : e.place().size() + 2); }
-
 // Infinite convexities (pivots, cusps) as null: JSON has no infinity.
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(); }
 
@@ -143,7 +140,7 @@ std::vector<PanelSolid> panel_solids(const CreasePattern& p, const PatternSorce&
     try {
       out.push_back(panel_solid(in[f]));
     } catch (const InputError& e) {
-      throw InputError("faces[" + std::to_string(f) + "]: " + e.place(), message_of(e));
+      throw InputError("faces[" + std::to_string(f) + "]: " + e.place(), e.message());
     }
   }
   return out;
@@ -244,12 +241,12 @@ void add_sorce_command(CLI::App& app) {
     } catch (const InputError& e) {
       // The design layer's places, as the user gave them.
       const std::string& place = e.place();
-      if (place == "thickness") throw InputError("--thickness", message_of(e));
-      if (place == "drive") throw InputError("--drive", message_of(e));
-      if (place == "to") throw InputError("--to", message_of(e));
-      if (place == "pattern" || place == "branch") throw InputError(a->pattern, message_of(e));
+      if (place == "thickness") throw InputError("--thickness", e.message());
+      if (place == "drive") throw InputError("--drive", e.message());
+      if (place == "to") throw InputError("--to", e.message());
+      if (place == "pattern" || place == "branch") throw InputError(a->pattern, e.message());
       if (place.rfind("end_offsets", 0) == 0 || place.rfind("offset_coefficients", 0) == 0)
-        throw InputError((spec_given ? a->offsets : a->pattern) + ": " + place, message_of(e));
+        throw InputError((spec_given ? a->offsets : a->pattern) + ": " + place, e.message());
       throw;
     }
     const PatternSorce& s = d.sorce;

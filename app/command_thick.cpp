@@ -94,7 +94,7 @@ void add_thick_command(CLI::App& app) {
     try {
       require_flat_pattern(p);  // before the zero-thickness trace, which would run on a folded form
     } catch (const InputError& e) {
-      throw InputError(a->pattern, std::string(e.what()).substr(e.place().size() + 2));
+      throw InputError(a->pattern, e.message());
     }
 
     ThickReportRequest request;
@@ -112,7 +112,7 @@ void add_thick_command(CLI::App& app) {
     try {
       r = thick_report(p, t, request);
     } catch (const InputError& e) {
-      const std::string what = std::string(e.what()).substr(e.place().size() + 2);
+      const std::string what = e.message();
       if (e.place() == "thickness") throw InputError("--thickness", what);
       if (e.place() == "hinges") throw InputError("--hinges", what);
       if (e.place() == "pattern") throw InputError(a->pattern, what);
@@ -181,7 +181,7 @@ void add_thick_command(CLI::App& app) {
       try {
         state = thick_state_at(r, to_radians(a->at));
       } catch (const InputError& e) {
-        throw InputError("--at", std::string(e.what()).substr(e.place().size() + 2));
+        throw InputError("--at", e.message());
       }
       const FoldedGeometry placed = place_thick_sheet(r, state.rho);
       if (!(placed.relative_mismatch() <= 1e-9)) {

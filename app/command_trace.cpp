@@ -176,7 +176,7 @@ MotionTrace trace_with_flag_names(const CreasePattern& p, const Topology& t, con
   try {
     return trace_motion(p, t, rq);
   } catch (const InputError& e) {
-    const std::string what = std::string(e.what()).substr(e.place().empty() ? 0 : e.place().size() + 2);
+    const std::string what = e.message();
     throw InputError(e.place().empty() ? file : "--" + e.place(), what);
   }
 }

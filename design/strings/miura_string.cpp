@@ -135,7 +135,7 @@ CreasePattern build_string_pattern(const MiuraString& s, const Eigen::VectorXd& 
   } catch (const InputError& e) {
     // The closed form holds for alpha down to 1e-300 deg, but a drawn crease at such an
     // angle lies on the spine within the pattern's resolution (1e-10 of its size).
-    throw InputError(e.place(), std::string(e.what()).substr(e.place().size() + 2) +
+    throw InputError(e.place(), e.message() +
                                     " (the spec's crease pattern cannot be drawn: an alpha this close to 0 or 90 deg puts a "
                                     "peripheral crease on another crease at these segment lengths and width)");
   }

@@ -260,9 +260,7 @@ CreasePattern parse_opx(const std::string& text, const std::string& source, cons
   try {
     p = parse_svg(svg, source, options, &summary.arrangement);
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    const std::string rest = what.substr(std::min(what.size(), e.place().empty() ? 0 : e.place().size() + 2));
-    throw InputError(rename(e.place()), rename(rest));
+    throw InputError(rename(e.place()), rename(e.message()));
   }
   for (auto& w : p.warnings) w = rename(w);
   if (summary.lines_by_type[kTypeAux] > 0)

@@ -1003,7 +1003,7 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
         const std::size_t k = std::stoul(m[1]);
         if (k < arr.vertices.size()) where = " [the point " + point(arr.vertices[k]) + " of the drawing]";
       }
-      throw InputError(e.place(), what.substr(std::min(what.size(), e.place().size() + 2)) + where);
+      throw InputError(e.place(), e.message() + where);
     }
   };
   // How precisely each vertex is placed (CreasePattern::position_bounds): the boxes of the
