@@ -4,6 +4,7 @@
 // over its traced range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -102,6 +103,46 @@ TEST(SorcePattern, SingleVertexReproducesTheAnalyticVertex) {
   // sorce_path_spline_test.cpp; the trace's own samples agree with eq 25 to ~1e-14).
   EXPECT_LE(err_gamma, 2e-6);
   EXPECT_LE(err_profile, 6e-7);
+
+  // Pose table at t = 1: the four panels (all overlapping near the vertex) lie flat in distinct
+  // layers, mid-planes at least h apart, each face's normal along +-z.
+  const std::vector<Eigen::Isometry3d>& end = s.poses.back();
+  ASSERT_EQ(s.pose_times.back(), 1.0);
+  std::vector<double> height;
+  for (int f = 0; f < 4; ++f) {
+    EXPECT_NEAR(std::abs((end[f].linear() * Eigen::Vector3d::UnitZ()).z()), 1.0, 1e-12) << f;
+    height.push_back((end[f] * Eigen::Vector3d::Zero()).z());  // the vertex lies in every face
+  }
+  std::sort(height.begin(), height.end());
+  for (int f = 0; f + 1 < 4; ++f) EXPECT_GE(height[f + 1] - height[f], h - 1e-12) << f;
+}
+
+// Given end offsets, per-face thicknesses and the seed's basis offsets (eq 36) go through to
+// the folds unchanged: the pattern's profiles match the analytic vertex built with them.
+TEST(SorcePattern, GivenOffsetsAndBasesMatchTheAnalyticVertex) {
+  const CreasePattern p = vertex_a_pattern();
+  PatternSorceRequest rq;
+  rq.face_thickness = {0.1, 0.1, 0.1, 0.1};
+  rq.end_offsets = {-0.15, 0.05, 0.05, -0.15};
+  rq.offset_coefficients = {{0.2, -0.1}, {0.0, 0.3, 0.1}, {}, {-0.2}};
+  rq.trace.drive = 1;
+  rq.trace.to = M_PI;
+  rq.trace.steps = 40;
+  const PatternSorce s = pattern_sorce(p, rq);
+  expect_verified(s);
+  EXPECT_TRUE(s.checks.all_stack);
+  std::array<ScalarFunction, 4> offset;
+  for (int i = 0; i < 4; ++i) offset[i] = basis_offset(rq.end_offsets[i], rq.offset_coefficients[i], seed_offset_bases());
+  const SorceVertex v = sorce_vertex(kVertexA, vertex_fold_angles(kVertexA, VertexParameterization::kMajorLinear),
+                                     offset, {0.1, 0.1, 0.1, 0.1});
+  double err = 0.0;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 1; i < 100; ++i) {
+      const ProfilePoint a = profile_point(s.creases[j].motion, i / 100.0), b = profile_point(v.folds[j], i / 100.0);
+      err = std::max({err, (a.s_left - b.s_left).norm(), (a.s_right - b.s_right).norm()});
+    }
+  std::printf("vertex A with bases vs analytic: profiles %.2e\n", err);
+  EXPECT_LE(err, 6e-7);
 }
 
 const std::string kBundled = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/";
@@ -188,6 +229,12 @@ TEST(SorcePattern, BadInputNamesThePlace) {
   bad = rq;
   bad.pose_times = {0.5, 1.5};
   EXPECT_EQ(place(bad), "pose_times[1]");
+  bad = rq;
+  bad.offset_coefficients = {{}, {0.1, 0.1, 0.1, 0.1}, {}, {}};
+  EXPECT_EQ(place(bad), "offset_coefficients[1]");
+  bad = rq;
+  bad.end_offsets = {0.0, 0.0};
+  EXPECT_EQ(place(bad), "end_offsets");
   bad = rq;
   bad.trace.steps = 5;
   EXPECT_EQ(place(bad), "branch");
