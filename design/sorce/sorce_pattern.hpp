@@ -45,7 +45,9 @@ namespace rigidfold::sorce {
 
 struct PatternSorceRequest {
   // The path: this branch if given (traced on this pattern), else trace_motion(pattern, trace)
-  // with trace.force_general set (the general solver), its branch 0.
+  // with trace.force_general set (the general solver), its branch 0. For a flat-folded end set
+  // trace.to = +-pi (the trace's default is 170 deg); the solver then stops a few 1e-6 rad short
+  // of pi on patterns whose creases all reach pi together (Miura), exactly at pi on one vertex.
   std::optional<MotionBranch> branch;
   TraceRequest trace;
   double thickness = 0.0;               // every panel (> 0) unless face_thickness is given
@@ -64,7 +66,9 @@ struct CreaseJoint {
   Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();  // fold frame (above), reference coordinates
   FoldMotion motion;
   FoldReport report;
-  bool folds = true;  // false: rho = 0 all along the path (no joint; faces kept coplanar)
+  // false: |rho| <= 1e-9 all along the path (no joint, no report; its faces get equal offsets).
+  // A crease that folds but ends at exactly 0 is treated the same way by the stacking rule.
+  bool folds = true;
   // Verification figures of this crease (see PatternChecks).
   double consistency = 0.0, pitch = 0.0, contact = 0.0;
 };
