@@ -89,6 +89,8 @@ Json crease_json(const CreaseJoint& j) {
   c["consistency"] = j.consistency;
   c["pitch"] = j.pitch;
   c["contact_3d"] = j.contact;
+  c["rolled_gamma"] = finite_or_null(j.rolled_gamma);
+  c["rolled_translation"] = finite_or_null(j.rolled_translation);
   return c;
 }
 
@@ -101,6 +103,9 @@ Json checks_json(const PatternChecks& k) {
   c["contact_3d"] = k.contact;
   c["rolling_residual"] = k.rolling;
   c["contact_residual"] = k.contact_planar;
+  c["rolled_gamma"] = k.rolled_gamma;
+  c["rolled_translation"] = k.rolled_translation;
+  c["not_rolled"] = k.not_rolled;
   c["flat_folded_end"] = k.flat_folded_end;
   c["all_stack"] = k.all_stack;
   Json inter = Json::array();

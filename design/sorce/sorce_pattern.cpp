@@ -1,5 +1,7 @@
 #include "design/sorce/sorce_pattern.hpp"
 
+#include "design/sorce/sorce_rolling.hpp"
+
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -12,6 +14,7 @@
 #include <nlopt.hpp>
 #include <string>
 
+#include "design/sorce/sorce_rolling.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -295,7 +298,16 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
     j.motion.thickness_left = thickness[j.left_face];
     j.motion.thickness_right = thickness[j.right_face];
     j.folds = sign[e] != 0 || path.samples.row(e).cwiseAbs().maxCoeff() > 1e-9;
-    if (j.folds) j.report = fold_report(j.motion, report);
+    if (j.folds) {
+      j.report = fold_report(j.motion, report);
+      if (j.report.cusps.empty() && j.report.ill_behaved.empty() && j.report.stationary.empty()) {
+        const RollingRecovery rolled = rolling_recovery(j.motion, request.check_samples);
+        j.rolled_gamma = rolled.gamma;
+        j.rolled_translation = rolled.translation;
+      } else {
+        j.rolled_gamma = j.rolled_translation = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
     joint_of_edge[e] = static_cast<int>(out.creases.size());
     out.creases.push_back(std::move(j));
   }
@@ -308,6 +320,12 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
     if (!j.folds) continue;
     checks.rolling = std::max(checks.rolling, j.report.max_rolling_residual);
     checks.contact_planar = std::max(checks.contact_planar, j.report.max_contact_residual);
+    if (std::isnan(j.rolled_gamma)) {
+      checks.not_rolled.push_back(j.edge);
+    } else {
+      checks.rolled_gamma = std::max(checks.rolled_gamma, j.rolled_gamma);
+      checks.rolled_translation = std::max(checks.rolled_translation, j.rolled_translation);
+    }
     checks.flat_folded_end = checks.flat_folded_end && j.report.ends.flat_folded_end;
     checks.all_stack = checks.all_stack && j.report.stacks;
   }

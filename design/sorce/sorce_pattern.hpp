@@ -71,6 +71,10 @@ struct CreaseJoint {
   bool folds = true;
   // Verification figures of this crease (see PatternChecks).
   double consistency = 0.0, pitch = 0.0, contact = 0.0;
+  // Forward rolling (sorce_rolling.hpp) at the check samples: the profiles rolled on each other
+  // by matched arc length give back gamma (radians) and the right panel's translation (length);
+  // not run (NaN) where the report finds a cusp or a t with gamma' = 0.
+  double rolled_gamma = 0.0, rolled_translation = 0.0;
 };
 
 struct FaceOffset {
@@ -100,6 +104,9 @@ struct PatternChecks {
   double contact = 0.0;
   // Largest rolling/contact residual of the folds' reports (length units).
   double rolling = 0.0, contact_planar = 0.0;
+  // Forward rolling over the creases where it runs, and the folding creases where it does not.
+  double rolled_gamma = 0.0, rolled_translation = 0.0;
+  std::vector<int> not_rolled;
   // (d) every folding crease ends at |gamma(1)| = pi (1e-12) and, if so, whether all stack.
   bool flat_folded_end = false;
   bool all_stack = false;

@@ -110,4 +110,23 @@ PlanarCurve right_profile_curve(const FoldMotion& m) {
   };
 }
 
+RollingRecovery rolling_recovery(const FoldMotion& m, const PlanarCurve& right, const std::vector<double>& ts) {
+  const auto rolled = roll_profiles(left_profile_curve(m), right, [&](double t) { return Vec2(0.0, m.z_left(t)[0]); }, ts);
+  RollingRecovery e;
+  for (std::size_t k = 0; k < ts.size(); ++k) {
+    const FoldPoses poses = fold_poses(m, ts[k]);
+    e.gamma = std::max(e.gamma, std::abs(rolled[k].gamma - poses.right.theta));
+    e.translation = std::max(e.translation, (rolled[k].right_translation - poses.right.r).norm());
+    e.parameter = std::max(e.parameter, std::abs(rolled[k].u_right - ts[k]));
+  }
+  return e;
+}
+
+RollingRecovery rolling_recovery(const FoldMotion& m, int samples) {
+  if (samples < 2) throw InputError("samples", "need at least 2");
+  std::vector<double> ts;
+  for (int k = 0; k < samples; ++k) ts.push_back(static_cast<double>(k) / (samples - 1));
+  return rolling_recovery(m, right_profile_curve(m), ts);
+}
+
 }  // namespace rigidfold::sorce

@@ -46,4 +46,15 @@ std::vector<RolledPose> roll_profiles(const PlanarCurve& left, const PlanarCurve
 PlanarCurve left_profile_curve(const FoldMotion& motion);
 PlanarCurve right_profile_curve(const FoldMotion& motion);
 
+// The reconstruction compared with the fold's own motion (fold_poses) at parameters t:
+// largest |gamma_rolled - gamma| (radians), |c_rolled - c| (length) and |u_right - t|.
+struct RollingRecovery {
+  double gamma = 0.0, translation = 0.0, parameter = 0.0;
+};
+// Rolls `right` (a curve in t, normally right_profile_curve(motion)) on the motion's left
+// profile at the increasing t in [0, 1] (first 0), the left panel at (0, z_l(t)).
+RollingRecovery rolling_recovery(const FoldMotion& motion, const PlanarCurve& right, const std::vector<double>& t);
+// The motion's own profiles at `samples` evenly spaced t (>= 2; InputError("samples")).
+RollingRecovery rolling_recovery(const FoldMotion& motion, int samples);
+
 }  // namespace rigidfold::sorce

@@ -24,22 +24,7 @@ std::vector<double> grid(int n) {
   return t;
 }
 
-struct Recovery {
-  double gamma = 0.0, translation = 0.0, parameter = 0.0;
-};
-
-Recovery recover(const FoldMotion& m, const PlanarCurve& right) {
-  const std::vector<double> ts = grid(50);
-  const auto rolled = roll_profiles(left_profile_curve(m), right, [&](double t) { return Vec2(0.0, m.z_left(t)[0]); }, ts);
-  Recovery e;
-  for (std::size_t k = 0; k < ts.size(); ++k) {
-    const FoldPoses poses = fold_poses(m, ts[k]);
-    e.gamma = std::max(e.gamma, std::abs(rolled[k].gamma - poses.right.theta));
-    e.translation = std::max(e.translation, (rolled[k].right_translation - poses.right.r).norm());
-    e.parameter = std::max(e.parameter, std::abs(rolled[k].u_right - ts[k]));
-  }
-  return e;
-}
+RollingRecovery recover(const FoldMotion& m, const PlanarCurve& right) { return rolling_recovery(m, right, grid(50)); }
 
 TEST(SorceRolling, ForwardRollingRecoversTheMotion) {
   std::vector<std::pair<const char*, SorceVertex>> cases{
@@ -49,7 +34,7 @@ TEST(SorceRolling, ForwardRollingRecoversTheMotion) {
       {"vertex B circular", circular_split_vertex(vertex_b_sectors(), VertexParameterization::kSymmetric, 0.1)}};
   for (const auto& [name, v] : cases) {
     for (int j = 0; j < 4; ++j) {
-      const Recovery e = recover(v.folds[j], right_profile_curve(v.folds[j]));
+      const RollingRecovery e = recover(v.folds[j], right_profile_curve(v.folds[j]));
       EXPECT_LE(e.gamma, 1e-8) << name << " fold " << j + 1;
       EXPECT_LE(e.translation, 1e-8) << name << " fold " << j + 1;
       EXPECT_LE(e.parameter, 1e-6) << name << " fold " << j + 1;
@@ -58,7 +43,7 @@ TEST(SorceRolling, ForwardRollingRecoversTheMotion) {
   // The circle oracle.
   const ScalarFunction g = linear_fold(kPi);
   const FoldMotion circle{g, circular_offset(0.25, g), circular_offset(0.25, g), {}, 0.5, 0.5};
-  const Recovery e = recover(circle, right_profile_curve(circle));
+  const RollingRecovery e = recover(circle, right_profile_curve(circle));
   EXPECT_LE(e.gamma, 1e-8);
   EXPECT_LE(e.translation, 1e-8);
 }
@@ -68,7 +53,7 @@ TEST(SorceRolling, WrongProfileIsNotRecovered) {
   const SorceVertex v = vertex_a_linear(1.0);
   FoldMotion other = v.folds[1];
   other.z_right = power_function(0.6, 1);  // z2(1) = 0.6 instead of 0.5
-  const Recovery e = recover(v.folds[1], right_profile_curve(other));
+  const RollingRecovery e = recover(v.folds[1], right_profile_curve(other));
   EXPECT_GT(e.gamma, 1e-3);
 }
 
