@@ -1,4 +1,4 @@
-// rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--optimize [--epsilon E]
+// rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--circular EDGE,...] [--optimize [--epsilon E]
 //                 [--max-protrusion P] [--max-s0 S]] [--drive E] [--to DEG] [--steps N]
 //                 [--at T] [--samples N] [--json] [--out DIR]
 // SORCE rolling-contact joints (seed 002) for every folding crease of a pattern, on the path
@@ -168,6 +168,7 @@ void add_sorce_command(CLI::App& app) {
     std::string pattern, offsets = "linear", out;
     double thickness = 0, epsilon = 0, max_protrusion = -1, max_s0 = -1, to = 0, at = -1;
     int drive = -1, steps = 40, samples = 201;
+    std::vector<int> circular;
     bool optimize = false, json = false, to_given = false;
   };
   auto a = std::make_shared<Args>();
@@ -178,6 +179,10 @@ void add_sorce_command(CLI::App& app) {
   cmd->add_option("--offsets", a->offsets,
                   "linear (z_f = z_f(1) t, z_f(1) by the stacking rule; default) or SPEC.json: {\"end_offsets\": [per face], "
                   "\"coefficients\": [[b1, b2, b3] per face]}");
+  cmd->add_option("--circular", a->circular,
+                  "creases (edge indices, comma-separated) made circular CORE joints: both faces z = -(T/2) tan(gamma/4), "
+                  "profiles on arcs of radius T/2")
+      ->delimiter(',');
   cmd->add_flag("--optimize", a->optimize, "search the faces' offset coefficients for the figure of merit (NLopt COBYLA)");
   cmd->add_option("--epsilon", a->epsilon, "with --optimize: smallest convexity allowed (1/length, >= 0)")->check(finite_in(0, 1e300));
   cmd->add_option("--max-protrusion", a->max_protrusion, "with --optimize: bound on every cam's protrusion (length, >= 0)")
@@ -224,6 +229,7 @@ void add_sorce_command(CLI::App& app) {
       rq.sorce.end_offsets = spec.end_offsets;
       rq.sorce.offset_coefficients = spec.coefficients;
     }
+    rq.sorce.circular_edges = a->circular;
     if (a->drive >= 0) rq.sorce.trace.drive = a->drive;
     if (to->count() > 0) {
       if (a->to == 0) throw InputError("--to", "must not be 0");
@@ -249,6 +255,7 @@ void add_sorce_command(CLI::App& app) {
       if (place == "thickness") throw InputError("--thickness", e.message());
       if (place == "drive") throw InputError("--drive", e.message());
       if (place == "to") throw InputError("--to", e.message());
+      if (place.rfind("circular_edges", 0) == 0) throw InputError("--circular " + place.substr(14), e.message());
       if (place == "pattern" || place == "branch") throw InputError(a->pattern, e.message());
       if (place.rfind("end_offsets", 0) == 0 || place.rfind("offset_coefficients", 0) == 0)
         throw InputError((spec_given ? a->offsets : a->pattern) + ": " + place, e.message());

@@ -84,7 +84,13 @@ ScalarFunction quintic_spline(const std::vector<double>& values) {
       5, -20, 30, -20, 5, 0,
       -1, 5, -10, 10, -5, 1).finished() / 120.0;
   auto pieces = std::make_shared<Eigen::Matrix<double, 6, Eigen::Dynamic>>(6, n);
-  for (int i = 0; i < n; ++i) pieces->col(i) = kBasis * c.segment<6>(i);  // c_{i-2} .. c_{i+3}
+  for (int i = 0; i < n; ++i) {
+    pieces->col(i) = kBasis * c.segment<6>(i);  // c_{i-2} .. c_{i+3}
+    // The interpolation condition holds exactly at each piece's start (the solve leaves it to
+    // round-off): the flat state is then exactly rho = 0 at t = 0, where the profiles' convexity
+    // takes its sign from rho' (sorce_profile.hpp) and a stray -1e-17 would flip it.
+    (*pieces)(0, i) = values[i];
+  }
   return [pieces, n](double t) {
     const double x = t * n;
     const int i = std::clamp(static_cast<int>(std::floor(x)), 0, n - 1);

@@ -264,8 +264,30 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
       try {
         face.z = basis_offset(end_offsets[f], request.offset_coefficients[f], seed_offset_bases());
       } catch (const InputError& ex) {
-        throw InputError(at("offset_coefficients", f), ex.what());
+        throw InputError(at("offset_coefficients", f), ex.message());
       }
+    }
+  }
+  // Circular CORE joints: each listed crease's two faces follow its fold angle.
+  std::vector<int> circular_edge_of_face(nf, -1);
+  for (std::size_t k = 0; k < request.circular_edges.size(); ++k) {
+    const int e = request.circular_edges[k];
+    const std::string place = at("circular_edges", static_cast<int>(k));
+    if (e < 0 || e >= ne || !topology.edge_is_hinge[e]) throw InputError(place, "is not a hinge crease of the pattern");
+    const int l = topology.edge_faces[e][0], r = topology.edge_faces[e][1];
+    if (thickness[l] != thickness[r]) throw InputError(place, "its two faces differ in thickness");
+    for (int f : {l, r}) {
+      const int other = circular_edge_of_face[f];
+      if (other >= 0 && other != e)
+        for (int i = 0; i < request.check_samples; ++i) {
+          const double t = static_cast<double>(i) / (request.check_samples - 1);
+          if (!(std::abs(path.rho[e](t)[0] - path.rho[other](t)[0]) <= 1e-9))
+            throw InputError(place, "face " + std::to_string(f) + " is also on circular crease " + std::to_string(other) +
+                                        ", whose fold angle differs from this one's along the path");
+        }
+      circular_edge_of_face[f] = e;
+      out.faces[f].z = circular_offset(thickness[f] / 2, path.rho[e]);
+      out.faces[f].end_value = out.faces[f].z(1.0)[0];
     }
   }
 

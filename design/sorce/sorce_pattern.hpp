@@ -54,6 +54,11 @@ struct PatternSorceRequest {
   std::vector<double> face_thickness;   // empty, or one per face (> 0)
   std::vector<double> end_offsets;      // empty (derived, see above), or z_f(1) per face
   std::vector<std::vector<double>> offset_coefficients;  // empty (linear), or b per face (<= 3 each)
+  // Hinge creases forced to circular CORE joints (seed section 3, eq 2): both faces of each get
+  // z = -(h/2) tan(gamma_e(t)/4), overriding end_offsets and coefficients there, so the crease's
+  // profiles are arcs of radius h/2. A face on two listed creases needs their gamma equal along
+  // the path (1e-9 rad at the check samples) and both faces of a crease the same thickness.
+  std::vector<int> circular_edges;
   std::vector<double> pose_times;       // t of the pose table; empty: 0, 0.1, .., 1
   int check_samples = 21;               // evenly spaced t for pitch, spline closure gap, interference (>= 2)
   bool check_interference = true;
@@ -136,7 +141,7 @@ struct PatternSorce {
 };
 
 // Throws InputError: "pattern" (not flat, or without hinges), "thickness", "face_thickness[f]",
-// "end_offsets[f]", "offset_coefficients[f]", "pose_times[i]", "check_samples", "branch" (path
+// "end_offsets[f]", "offset_coefficients[f]", "circular_edges[k]", "pose_times[i]", "check_samples", "branch" (path
 // not traced / too short), and the trace's own places ("drive", "to").
 PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceRequest& request);
 

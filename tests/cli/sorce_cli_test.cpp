@@ -88,6 +88,18 @@ TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
   fs::remove_all(out);
 }
 
+// --circular: vertex A's fold 2 (edge 1) rolls on arcs of radius T/2 (convexity 2/T).
+TEST(SorceCli, CircularCreaseHasConvexityTwoOverThickness) {
+  const auto r = test::run_command(test::cli() + " sorce " + kSource + "data/sorce/vertex_a.fold --thickness 0.1 --drive 1 --to 180 --circular 1 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  for (const auto& c : j["creases"]) {
+    if (c["edge"] != 1) continue;
+    for (const char* side : {"convexity_left", "convexity_right"})
+      for (int k = 0; k < 2; ++k) EXPECT_NEAR(c[side][k].get<double>(), 20.0, 2e-8) << side;
+  }
+}
+
 TEST(SorceCli, OptimizeReportsItsSearch) {
   const fs::path pattern = scratch("m23.fold");
   ASSERT_EQ(test::run_command(test::cli() + " generate miura --rows 2 --cols 3 --out " + pattern.string()).status, 0);
@@ -124,6 +136,8 @@ TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
       {kMiura + " --thickness 0.05 --offsets " + spec("d.json", "[1,"), "d.json"},
       {kMiura + " --thickness 0.05 --offsets " + scratch("missing.json").string(), "missing.json"},
       {kMiura + " --thickness 0.05 --out " + kMiura, "--out"},
+      {kMiura + " --thickness 0.05 --circular 0", "--circular [0]"},
+      {kMiura + " --thickness 0.05 --circular x", "--circular"},
       {kSource + "data/bundled/miura_12x12_folded.fold --thickness 0.05", "miura_12x12_folded.fold"},
   };
   for (const auto& [args, place] : cases) {
