@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlopt.hpp>
 
+#include "design/nlopt/nlopt_result_name.hpp"
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
@@ -161,18 +162,6 @@ SearchValues search_values(const OffsetDesignProblem& p, const Evaluation& e, st
   return v;
 }
 
-std::string result_name(nlopt::result r) {
-  switch (r) {
-    case nlopt::SUCCESS: return "SUCCESS";
-    case nlopt::STOPVAL_REACHED: return "STOPVAL_REACHED";
-    case nlopt::FTOL_REACHED: return "FTOL_REACHED";
-    case nlopt::XTOL_REACHED: return "XTOL_REACHED";
-    case nlopt::MAXEVAL_REACHED: return "MAXEVAL_REACHED";
-    case nlopt::MAXTIME_REACHED: return "MAXTIME_REACHED";
-    default: return "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
-  }
-}
-
 // State shared by NLopt's callbacks. NLopt's COBYLA evaluates the objective and then the
 // constraints at the same x; the last evaluation is cached so each x costs one set of fold
 // reports, and every evaluation is offered to the best-design bookkeeping.
@@ -288,7 +277,7 @@ OffsetDesign optimize_offsets(const OffsetDesignProblem& problem, const std::vec
   opt.set_initial_step(step);
   double f = 0.0;
   try {
-    stop = result_name(opt.optimize(x, f));
+    stop = nlopt_result_name(opt.optimize(x, f));
   } catch (const nlopt::roundoff_limited&) {
     stop = "ROUNDOFF_LIMITED";
   } catch (const nlopt::forced_stop&) {

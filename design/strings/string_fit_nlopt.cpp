@@ -9,6 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "design/nlopt/nlopt_result_name.hpp"
 #include "design/strings/string_vertex.hpp"
 #include "kernel/math/so3.hpp"
 
@@ -159,18 +160,6 @@ nlopt::algorithm algorithm_from_name(const std::string& name) {
                               "' (LD_SLSQP, LD_MMA, LD_CCSAQ, LN_COBYLA; global GN_ISRES)");
 }
 
-std::string result_name(nlopt::result r) {
-  switch (r) {
-    case nlopt::SUCCESS: return "SUCCESS";
-    case nlopt::STOPVAL_REACHED: return "STOPVAL_REACHED";
-    case nlopt::FTOL_REACHED: return "FTOL_REACHED";
-    case nlopt::XTOL_REACHED: return "XTOL_REACHED";
-    case nlopt::MAXEVAL_REACHED: return "MAXEVAL_REACHED";
-    case nlopt::MAXTIME_REACHED: return "MAXTIME_REACHED";
-    default: return "FAILURE(" + std::to_string(static_cast<int>(r)) + ")";
-  }
-}
-
 // Runs one NLopt stage from x (in place). Returns the result code name. Roundoff-limited
 // stops (nlopt::roundoff_limited) keep the best point NLopt found.
 std::string run_stage(Problem& p, nlopt::algorithm alg, std::vector<double>& x, const std::vector<double>& lo,
@@ -188,7 +177,7 @@ std::string run_stage(Problem& p, nlopt::algorithm alg, std::vector<double>& x, 
   for (std::size_t k = 0; k < x.size(); ++k) x[k] = std::clamp(x[k], lo[k], hi[k]);
   double f = 0;
   try {
-    return result_name(opt.optimize(x, f));
+    return nlopt_result_name(opt.optimize(x, f));
   } catch (const nlopt::roundoff_limited&) {
     return "ROUNDOFF_LIMITED";
   } catch (const nlopt::forced_stop&) {
