@@ -1,8 +1,9 @@
 // rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--circular EDGE,...] [--optimize [--epsilon E]
 //                 [--max-protrusion P] [--max-s0 S]] [--drive E] [--to DEG] [--steps N]
-//                 [--at T] [--samples N] [--json] [--out DIR]
+//                 [--at T] [--samples N] [--general] [--json] [--out DIR]
 // SORCE rolling-contact joints (seed 002) for every folding crease of a pattern, on the path
-// the general solver traces (design/sorce/sorce_design.hpp, the front door): per crease its
+// trace_motion traces (exact multiplier family for flat-foldable degree-4 patterns, else the
+// general solver; --general forces it; design/sorce/sorce_design.hpp, the front door): per crease its
 // profile pair's diagnostics, per face its offset, the pattern's verification figures, and
 // with --optimize the offset coefficients searched for the figure of merit.
 // --out DIR writes:
@@ -169,7 +170,7 @@ void add_sorce_command(CLI::App& app) {
     double thickness = 0, epsilon = 0, max_protrusion = -1, max_s0 = -1, to = 0, at = -1;
     int drive = -1, steps = 40, samples = 201;
     std::vector<int> circular;
-    bool optimize = false, json = false, to_given = false;
+    bool optimize = false, json = false, general = false;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, .svg, .opx), flat")->required();
@@ -188,7 +189,7 @@ void add_sorce_command(CLI::App& app) {
   cmd->add_option("--max-protrusion", a->max_protrusion, "with --optimize: bound on every cam's protrusion (length, >= 0)")
       ->check(finite_in(0, 1e300));
   cmd->add_option("--max-s0", a->max_s0, "with --optimize: bound on every |s0| (length, >= 0)")->check(finite_in(0, 1e300));
-  cmd->add_option("--drive", a->drive, "driving crease (edge index; default: the general solver's choice)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--drive", a->drive, "driving crease (edge index; default: the tracing model's choice)")->check(CLI::NonNegativeNumber);
   auto* to = cmd->add_option("--to", a->to,
                              "driving crease's final fold angle, t = 1 (degrees, signed; default 170 in its letter's direction; "
                              "+-180 for joints that reach the flat-folded state)")
@@ -197,6 +198,8 @@ void add_sorce_command(CLI::App& app) {
   cmd->add_option("--at", a->at, "with --out: also write the panels placed at this t (0..1) as panels_at.stl")
       ->check(finite_in(0, 1));
   cmd->add_option("--samples", a->samples, "points per profile in the drawings and solids (8..20000)")->check(CLI::Range(8, 20000));
+  cmd->add_flag("--general", a->general,
+                "trace with the general loop-closure solver even where the exact multiplier model applies");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->add_option("--out", a->out, "directory for sorce.json, profiles.svg/.dxf, panels.stl, frames.fold, poses.csv");
   cmd->callback([a, to] {
@@ -236,6 +239,7 @@ void add_sorce_command(CLI::App& app) {
       rq.sorce.trace.to = to_radians(a->to);
     }
     rq.sorce.trace.steps = a->steps;
+    rq.sorce.trace.force_general = a->general;
     rq.sorce.pose_times = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
     if (a->at >= 0 && std::find(rq.sorce.pose_times.begin(), rq.sorce.pose_times.end(), a->at) == rq.sorce.pose_times.end()) {
       rq.sorce.pose_times.push_back(a->at);
@@ -270,6 +274,7 @@ void add_sorce_command(CLI::App& app) {
     j["file"] = a->pattern;
     j["thickness"] = a->thickness;
     Json path;
+    path["model"] = d.model;
     path["driving_crease"] = s.path.drive;
     path["final_drive_deg"] = to_degrees(s.path.final_drive);
     path["knots"] = s.path.knots.size();

@@ -76,7 +76,8 @@ for f in data/bundled/*.fold; do
   [ "$name" = miura_tube_6_alpha60 ] && continue
   ./build/app/rigidfold export "$f" --svg "out/report/export/$name.svg" --dxf "out/report/export/$name.dxf" >/dev/null
 done
-# SORCE rolling-contact joints (seed 002) on the path traced by the general solver: the seed's
+# SORCE rolling-contact joints (seed 002) on the traced path (both patterns here: their exact
+# multiplier family): the seed's
 # vertex A with linear offsets (eq 27's end values from the stacking rule) and the bundled 4x4
 # Miura folded flat; per crease its profile pair (profiles.svg/.dxf), one printable STL per
 # panel, the panels at t = 0.5, frames.fold and poses.csv (`rigidfold sorce`).

@@ -15,12 +15,12 @@ SorceDesign sorce_design(const CreasePattern& pattern, const SorceDesignRequest&
   {
     // Traced once, so that the optimised joints run on the very path the first ones did.
     const Topology topology = build_topology(pattern, "pattern");
-    TraceRequest trace = request.sorce.trace;
-    trace.force_general = true;
+    TraceRequest trace = request.sorce.trace;  // force_general as the caller set it
     MotionTrace traced = trace_motion(pattern, topology, trace);
     if (traced.branches.empty() || !traced.branches[0].traced)
-      throw InputError("branch", "the general solver traced no motion: " + traced.note);
+      throw InputError("branch", "no motion was traced (" + traced.model_name + "): " + traced.note);
     out.branch = std::move(traced.branches[0]);
+    out.model = traced.model_name;
   }
   PatternSorceRequest first = request.sorce;
   first.branch = out.branch;

@@ -1,7 +1,9 @@
 #pragma once
 // The SORCE front door (issue 16): a crease pattern in, its SORCE joints out - the path
-// traced once by the kernel's general solver, the joints of sorce_pattern.hpp, and, when
-// asked, the panels' offset coefficients optimised for the figure of merit
+// traced once by the kernel's trace_motion with the model `check` picks (the exact multiplier
+// family for a pattern of flat-foldable degree-4 vertices, the general loop-closure solver
+// otherwise, or always with sorce.trace.force_general), the joints of sorce_pattern.hpp, and,
+// when asked, the panels' offset coefficients optimised for the figure of merit
 // (sorce_optimize.hpp) with the joints rebuilt on the same traced path.
 //
 // Optimisation variables: the seed's three basis coefficients (eq 36/37,
@@ -12,6 +14,7 @@
 //
 // Units: as sorce_pattern.hpp (pattern units, radians, t dimensionless).
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "design/sorce/sorce_optimize.hpp"
@@ -20,7 +23,7 @@
 namespace rigidfold::sorce {
 
 struct SorceDesignRequest {
-  PatternSorceRequest sorce;  // its `branch` is ignored: traced here from sorce.trace
+  PatternSorceRequest sorce;  // its `branch` is ignored: traced here from sorce.trace (force_general honoured)
   bool optimize = false;
   double epsilon = 0.0;                   // smallest convexity allowed (1/length)
   std::optional<double> max_protrusion;   // length
@@ -31,7 +34,8 @@ struct SorceDesignRequest {
 };
 
 struct SorceDesign {
-  MotionBranch branch;                       // the traced path (branch 0 of the general solver)
+  MotionBranch branch;                       // the traced path (branch 0 of the model's trace)
+  std::string model;                         // the model that traced it (trace_motion's model_name)
   PatternSorce sorce;                        // the joints (with the optimised coefficients, when asked)
   std::optional<OffsetDesign> optimization;  // the search's result, when asked
   std::vector<int> design_faces;             // faces whose coefficients were searched, 3 each in this order

@@ -78,7 +78,8 @@ struct CreaseJoint {
   double consistency = 0.0, pitch = 0.0, contact = 0.0;
   // Forward rolling (sorce_rolling.hpp) at the check samples: the profiles rolled on each other
   // by matched arc length give back gamma (radians) and the right panel's translation (length);
-  // not run (NaN) where the report finds a cusp or a t with gamma' = 0.
+  // not run (NaN) where the report finds a cusp or a t with gamma' = 0; a pivot at t = 1 is left
+  // out of the comparison (its tangent is a limit the spline path blurs; sorce_pattern.cpp).
   double rolled_gamma = 0.0, rolled_translation = 0.0;
 };
 
@@ -102,8 +103,8 @@ struct PatternChecks {
   // Screw pitch |omega . v| / |omega|^2 of each crease's 3D relative motion over the check samples
   // (relative to the pattern size; 0 for a motion in the fold's normal plane).
   double pitch = 0.0;
-  // (b) max over interior vertices of |prod T - I| around the vertex: at the knots, and over the
-  // check samples (between knots this is the spline's own closure gap, O(spline error)).
+  // (b) max over interior vertices of |prod T - I| around the vertex: at the knots, and midway
+  // between consecutive knots (the spline's own closure gap, O(spline error)).
   double closure_knots = 0.0, closure_samples = 0.0;
   // (c) max distance (length units) between the two faces' 3D images of s_l(t), s_r(t), at the knots.
   double contact = 0.0;

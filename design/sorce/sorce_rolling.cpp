@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "design/sorce/sorce_fold_report.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 
@@ -42,9 +43,11 @@ class ArcLength {
   std::vector<double> cumulative_;
 };
 
-// Unit tangent, with the limit direction where the speed vanishes at an end.
+// Unit tangent, with the limit direction where the speed vanishes at an end: below the
+// report's pivot tolerance (sorce_fold_report.hpp, relative to the curves' speed), where a
+// pivot's s' is round-off (a spline path leaves |s'| ~ 1e-13 there) and its direction noise.
 Vec2 unit_tangent(const CurvePoint& q, double u, double scale) {
-  if (q.d1.norm() > 1e-13 * scale) return q.d1.normalized();
+  if (q.d1.norm() > ReportOptions{}.speed_tolerance * scale) return q.d1.normalized();
   const Vec2 lim = u >= 0.5 ? Vec2(-q.d2) : Vec2(q.d2);
   return lim.normalized();
 }

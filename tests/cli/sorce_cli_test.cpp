@@ -1,6 +1,7 @@
 // `rigidfold sorce` (app/command_sorce.cpp): SORCE joints on the bundled 4 x 4 Miura-ori
-// traced by the general solver to the flat-folded state: every folding crease gets a joint
-// whose checks are within the bounds the JSON states; --out writes one closed, outward STL
+// traced to the flat-folded state (its exact multiplier family; with --general the general
+// solver): every folding crease gets a joint whose checks are within the bounds the JSON
+// states, and on the exact path every crease stacks at t = 1 with no slab interference; --out writes one closed, outward STL
 // per panel (each directed edge once and its reverse once) whose volumes add up to the
 // assembled panels' at --at (a rigid placement keeps volume), a multi-frame FOLD that reads
 // back, the pose table and the drawings; --optimize reports its search; bad input exits 2
@@ -59,6 +60,11 @@ TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
   EXPECT_EQ(folding, 24);
   for (const auto& [name, bound] : j["check_bounds"].items()) EXPECT_LE(j["checks"][name].get<double>(), bound.get<double>()) << name;
   EXPECT_FALSE(j.contains("stl_note")) << j["stl_note"];
+  EXPECT_EQ(j["path"]["model"], "multiplier-propagation");
+  EXPECT_NEAR(j["path"]["final_drive_deg"].get<double>(), -180.0, 1e-12);
+  EXPECT_TRUE(j["checks"]["flat_folded_end"].get<bool>());
+  EXPECT_TRUE(j["checks"]["all_stack"].get<bool>());
+  EXPECT_TRUE(j["checks"]["slab_interference"].empty());
 
   // One closed, outward STL per panel; together they fill what the assembly at t = 0.5 fills.
   double panels_volume = 0.0;
@@ -86,6 +92,15 @@ TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
   EXPECT_NE(slurp(out / "profiles.svg").find(">E4<"), std::string::npos);
   EXPECT_TRUE(j.contains("provenance"));
   fs::remove_all(out);
+}
+
+// --general: the same joints on the general solver's path pass the same bounds.
+TEST(SorceCli, GeneralSolverPathPassesTheChecks) {
+  const auto r = test::run_command(test::cli() + " sorce " + kMiura + " --thickness 0.05 --drive 4 --to=-180 --steps 30 --general --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_NE(j["path"]["model"], "multiplier-propagation");
+  for (const auto& [name, bound] : j["check_bounds"].items()) EXPECT_LE(j["checks"][name].get<double>(), bound.get<double>()) << name;
 }
 
 // --circular: vertex A's fold 2 (edge 1) rolls on arcs of radius T/2 (convexity 2/T).
