@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "kernel/math/number_text.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/json_input.hpp"
 
@@ -12,7 +13,7 @@ double number(const nlohmann::json& v, const std::string& source, const std::str
   if (!v.is_number()) throw InputError(source + ": " + ptr, "must be a number");
   const double x = v.get<double>();
   if (!std::isfinite(x) || !(std::abs(x) <= limit))
-    throw InputError(source + ": " + ptr, "must be a finite number of magnitude at most " + std::to_string(static_cast<long>(limit)));
+    throw InputError(source + ": " + ptr, "must be a finite number of magnitude at most " + short_text(limit));
   return x;
 }
 

@@ -1,7 +1,5 @@
 #include "design/sorce/sorce_pattern.hpp"
 
-#include "design/sorce/sorce_rolling.hpp"
-
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 #include <fcl/geometry/bvh/BVH_model.h>

@@ -150,6 +150,8 @@ TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
       {kMiura + " --thickness 0.05 --offsets " + spec("c.json", "{\"coefficients\": [[1, \"x\"]]}"), "c.json: /coefficients"},
       {kMiura + " --thickness 0.05 --offsets " + spec("d.json", "[1,"), "d.json"},
       {kMiura + " --thickness 0.05 --offsets " + scratch("missing.json").string(), "missing.json"},
+      {kSource + "data/sorce/vertex_a.fold --thickness 0.1 --offsets " + spec("e.json", "{\"end_offsets\": [1e301, 0, 0, 0]}"), "e.json: /end_offsets/0"},
+      {kSource + "data/sorce/vertex_a.fold --thickness 0.1 --offsets " + spec("f.json", "{\"coefficients\": [[], [101], [], []]}"), "f.json: /coefficients/1/0"},
       {kMiura + " --thickness 0.05 --out " + kMiura, "--out"},
       {kMiura + " --thickness 0.05 --circular 0", "--circular [0]"},
       {kMiura + " --thickness 0.05 --circular x", "--circular"},
