@@ -159,13 +159,23 @@ RollingResidual rolling_residual(const FoldMotion& m, double t) {
 
 SampledProfiles sample_profiles(const FoldMotion& motion, int samples) {
   if (samples < 2) throw InputError("samples", "need at least 2 points per profile");
+  const FoldEndPoints ends = end_points(motion);
   SampledProfiles s;
   for (int k = 0; k < samples; ++k) {
     const double t = static_cast<double>(k) / (samples - 1);
-    const ProfilePoint p = profile_point(motion, t);
-    s.t.push_back(t);
-    s.left.push_back(p.s_left);
-    s.right.push_back(p.s_right);
+    if (k == 0 || k == samples - 1) {
+      s.t.push_back(t);
+      s.left.push_back(k == 0 ? ends.left0 : ends.left1);
+      s.right.push_back(k == 0 ? ends.right0 : ends.right1);
+      continue;
+    }
+    try {
+      const ProfilePoint p = profile_point(motion, t);
+      s.t.push_back(t);
+      s.left.push_back(p.s_left);
+      s.right.push_back(p.s_right);
+    } catch (const InputError&) {  // gamma'(t) = 0: fold_report lists it (ill_behaved / stationary)
+    }
   }
   return s;
 }

@@ -60,9 +60,11 @@ struct ProfilePoint {
 // undefined: throws InputError("t") (see fold_report's ill-behaved points).
 ProfilePoint profile_point(const FoldMotion& motion, double t);
 
-// The profile pair at `samples` evenly spaced t in [0, 1], both ends included (each by
-// profile_point, exact). For drawings and solids. Throws InputError("samples") if samples < 2,
-// and passes on profile_point's error where gamma' = 0.
+// The profile pair at `samples` evenly spaced t in [0, 1], both ends included: the ends from
+// their analytic limits (end_points), the interior by profile_point; an interior t where
+// gamma' = 0 (undefined there; fold_report lists it) is skipped, so `t` may hold fewer points.
+// For drawings, solids and the Python binding. Throws InputError("samples") if samples < 2,
+// and passes on end_points' errors.
 struct SampledProfiles {
   std::vector<double> t;
   std::vector<Vec2> left, right;

@@ -36,29 +36,12 @@ py::dict fold_dict(const FoldMotion& motion, int samples) {
   ReportOptions options;
   options.samples = samples;
   const FoldReport r = fold_report(motion, options);
-  const FoldEndPoints ends = end_points(motion);
-  std::vector<double> ts;
-  std::vector<Vec2> left, right;
-  for (int k = 0; k < samples; ++k) {
-    const double t = static_cast<double>(k) / (samples - 1);
-    if (k == 0 || k == samples - 1) {
-      ts.push_back(t);
-      left.push_back(k == 0 ? ends.left0 : ends.left1);
-      right.push_back(k == 0 ? ends.right0 : ends.right1);
-      continue;
-    }
-    try {
-      const ProfilePoint p = profile_point(motion, t);
-      ts.push_back(t);
-      left.push_back(p.s_left);
-      right.push_back(p.s_right);
-    } catch (const InputError&) {  // gamma'(t) = 0: listed in the report's ill_behaved / stationary
-    }
-  }
+  const SampledProfiles sampled = sample_profiles(motion, samples);
+  const std::vector<double>& ts = sampled.t;
   Eigen::MatrixXd sl(static_cast<Eigen::Index>(ts.size()), 2), sr(static_cast<Eigen::Index>(ts.size()), 2);
   for (std::size_t i = 0; i < ts.size(); ++i) {
-    sl.row(static_cast<Eigen::Index>(i)) = left[i].transpose();
-    sr.row(static_cast<Eigen::Index>(i)) = right[i].transpose();
+    sl.row(static_cast<Eigen::Index>(i)) = sampled.left[i].transpose();
+    sr.row(static_cast<Eigen::Index>(i)) = sampled.right[i].transpose();
   }
   py::dict d;
   d["t"] = Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(ts.data(), static_cast<Eigen::Index>(ts.size())));
