@@ -27,5 +27,6 @@ void add_energy_command(CLI::App& app);  // rigidfold energy PATTERN --rest REST
 void add_waterbomb_command(CLI::App& app);  // rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
 void add_thick_command(CLI::App& app);  // rigidfold thick PATTERN --thickness T [--hinges top|bottom|mid|valley|bennett] [--json] [--out THICK.fold] [--stl F.stl --at DEG]
 void add_sorce_command(CLI::App& app);  // rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--optimize] [--json] [--out DIR]
+void add_network_command(CLI::App& app);  // rigidfold network NETWORK.json [--json] [--trace N]
 
 }  // namespace rigidfold::cli

@@ -5,6 +5,7 @@
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check|thick|sorce + flags
 //   RIGIDFOLD_FUZZ_ENTRY 5  sorce_spec_fuzz     sorce VERTEX_A.fold --thickness 0.1 --offsets INPUT --out DIR
+//   RIGIDFOLD_FUZZ_ENTRY 6  network_json_fuzz   network INPUT --json --trace 4
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
 // error", an exception that is not bad input) aborts, so libFuzzer reports it with the
 // input, like a crash.
@@ -144,6 +145,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       write_input(data, size);
       args = {"rigidfold", "sorce", kVertexA, "--thickness", "0.1", "--drive", "1", "--to", "180", "--offsets", input, "--out",
               in_private("sorce")};
+      break;
+    case 6:
+      write_input(data, size);
+      args = {"rigidfold", "network", input, "--json", "--trace", "4"};
       break;
     default:
       args = flag_args(data, size);

@@ -1,0 +1,118 @@
+#include "kernel/network/relation_types.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rigidfold {
+
+double apply_variant(AngleVariant v, double x) {
+  constexpr double pi = std::numbers::pi;
+  switch (v) {
+    case AngleVariant::kSame: return x;
+    case AngleVariant::kPiMinus: return pi - x;
+    case AngleVariant::kMinusPiPlus: return -pi + x;
+    case AngleVariant::kMinus: return -x;
+  }
+  return x;
+}
+
+const char* variant_text(AngleVariant v) {
+  switch (v) {
+    case AngleVariant::kSame: return "x";
+    case AngleVariant::kPiMinus: return "pi-x";
+    case AngleVariant::kMinusPiPlus: return "-pi+x";
+    case AngleVariant::kMinus: return "-x";
+  }
+  return "?";
+}
+
+const std::array<RelationType, 16>& relation_types() {
+  using V = AngleVariant;
+  // Table 2-1 of seed 003, row by row.
+  static const std::array<RelationType, 16> table{{
+      {1, V::kSame, V::kSame},           {2, V::kSame, V::kPiMinus},
+      {3, V::kSame, V::kMinusPiPlus},    {4, V::kSame, V::kMinus},
+      {5, V::kPiMinus, V::kSame},        {6, V::kPiMinus, V::kPiMinus},
+      {7, V::kPiMinus, V::kMinusPiPlus}, {8, V::kPiMinus, V::kMinus},
+      {9, V::kMinus, V::kMinus},         {10, V::kMinus, V::kMinusPiPlus},
+      {11, V::kMinus, V::kPiMinus},      {12, V::kMinus, V::kSame},
+      {13, V::kMinusPiPlus, V::kMinus},  {14, V::kMinusPiPlus, V::kMinusPiPlus},
+      {15, V::kMinusPiPlus, V::kPiMinus}, {16, V::kMinusPiPlus, V::kSame},
+  }};
+  return table;
+}
+
+AngleVariant twist_variant_of(int code, int k) { return static_cast<AngleVariant>((code >> (2 * k)) & 3); }
+
+S4RSectors twist_variant(const S4RSectors& base, int code) {
+  if (code < 0 || code > 255) throw std::invalid_argument("twist_variant: code must be in 0..255");
+  S4RSectors v;
+  for (int k = 0; k < 4; ++k) v[k] = apply_variant(twist_variant_of(code, k), base[k]);
+  return v;
+}
+
+namespace {
+
+// Inputs spread over the interior of the feasible set of joint 0 (motion limits excluded:
+// there the two branches merge and the closed form loses half its digits).
+std::vector<double> sample_inputs(const S4RSectors& twists, int samples) {
+  const S4RInputRange range = s4r_input_range(twists, 0);
+  if (!range.feasible) throw std::invalid_argument("classify_twist_variant: a linkage has no feasible input");
+  const auto intervals = range.intervals();
+  double total = 0.0;
+  for (const auto& iv : intervals) total += iv[1] - iv[0];
+  std::vector<double> out;
+  for (int i = 0; i < samples; ++i) {
+    double s = total * (i + 0.5) / samples;
+    for (const auto& iv : intervals) {
+      if (s <= iv[1] - iv[0]) {
+        out.push_back(iv[0] + s);
+        break;
+      }
+      s -= iv[1] - iv[0];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+VariantRelation classify_twist_variant(const S4RSectors& base, const S4RSectors& variant, int samples,
+                                       double tolerance) {
+  if (samples < 2) throw std::invalid_argument("classify_twist_variant: samples must be >= 2");
+  // Configurations (theta_0, theta_1) of one linkage, to be substituted into the other's relation.
+  struct Pair {
+    double in, out;
+    bool from_base;
+  };
+  std::vector<Pair> pairs;
+  for (const bool from_base : {true, false}) {
+    const S4RSectors& src = from_base ? base : variant;
+    for (double x : sample_inputs(src, samples))
+      for (const S4RFoldAngles& b : s4r_branches(src, x, 0).branches) pairs.push_back({b[0], b[1], from_base});
+  }
+  VariantRelation out;
+  out.samples = static_cast<int>(pairs.size());
+  out.rejected_margin = INFINITY;
+  for (const RelationType& type : relation_types()) {
+    double worst = 0.0;
+    for (const Pair& p : pairs) {
+      // The substitutions are involutions mod 2 pi, so the converse uses the same pair.
+      const S4RSectors& dst = p.from_base ? variant : base;
+      const double r = s4r_pair_residual(dst, 0, apply_variant(type.input, p.in), apply_variant(type.output, p.out));
+      worst = std::max(worst, std::isnan(r) ? INFINITY : std::fabs(r));
+    }
+    if (!pairs.empty() && worst <= tolerance) {
+      out.realised.push_back(type.number);
+      out.realised_residual = std::max(out.realised_residual, worst);
+    } else {
+      out.rejected_margin = std::min(out.rejected_margin, worst);
+    }
+  }
+  std::sort(out.realised.begin(), out.realised.end());
+  return out;
+}
+
+}  // namespace rigidfold
