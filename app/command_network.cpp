@@ -125,9 +125,28 @@ void add_network_command(CLI::App& app) {
     m["sigma_kept"] = mob.sigma_kept;
     m["sigma_dropped"] = mob.sigma_dropped;
     m["method"] = mob.method;
+    // A first-order DOF over-counts at a singular point: "mobile" only when the input
+    // actually moves by 1e-3 rad (both ways, or one way at a motion limit).
+    const int moves = mob.dof > 0 ? probe_input_motion(system, start.q, spec.input) : 0;
+    m["input_moves_1e-3_rad"] = moves;
     j["mobility"] = m;
-    j["verdict"] = mob.dof == 0 ? "rigid (DOF 0 at a closed configuration)"
-                                : "mobile (DOF " + std::to_string(mob.dof) + " at a closed configuration, first order)";
+    std::string verdict;
+    if (mob.dof == 0) {
+      verdict = "rigid (DOF 0 at a closed configuration)";
+    } else if (moves > 0) {
+      verdict = "mobile (DOF ";
+      verdict += std::to_string(mob.dof);
+      verdict += " at a closed configuration; the input moves)";
+    } else if (mob_held.dof == 0) {
+      verdict = "singular configuration (first-order DOF ";
+      verdict += std::to_string(mob.dof);
+      verdict += ") where the input does not move by 1e-3 rad: not mobile through it (evidence)";
+    } else {
+      verdict = "first-order DOF ";
+      verdict += std::to_string(mob.dof);
+      verdict += " with the input held: other joints move, the input does not";
+    }
+    j["verdict"] = verdict;
 
     NetworkTrace trace;
     if (a->trace > 0) {

@@ -106,4 +106,20 @@ NetworkTrace trace_network(const NetworkClosure& system, const Eigen::VectorXd& 
   return trace;
 }
 
+int probe_input_motion(const NetworkClosure& system, const Eigen::VectorXd& q, int input, double delta, double tolerance) {
+  if (input < 0 || input >= system.num_unknowns()) throw std::invalid_argument("probe_input_motion: input joint out of range");
+  if (q.size() != system.num_unknowns()) throw std::invalid_argument("probe_input_motion: q has the wrong size");
+  NetworkNewtonOptions newton;
+  newton.tolerance = tolerance;
+  newton.held = {input};
+  int moved = 0;
+  for (const double s : {1.0, -1.0}) {
+    Eigen::VectorXd q0 = q;
+    q0[input] += s * delta;
+    const NetworkNewtonResult res = network_project(system, q0, newton);
+    if (res.converged && system.residual(res.q).lpNorm<Eigen::Infinity>() <= tolerance) ++moved;
+  }
+  return moved;
+}
+
 }  // namespace rigidfold

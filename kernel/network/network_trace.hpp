@@ -64,4 +64,12 @@ struct NetworkTrace {
 NetworkTrace trace_network(const NetworkClosure& system, const Eigen::VectorXd& q_start, int input, double end_value,
                            int steps, const NetworkTraceOptions& options = {});
 
+// Whether the network moves with the input: from the closed q, Newton with joint `input`
+// held at q[input] + delta and at q[input] - delta (delta > 0, radians). Returns how many of
+// the two close to `tolerance` (0, 1 or 2). A first-order DOF > 0 at a singular point (the
+// flat state of developable vertices, where every axis lies in one plane) over-counts; 0
+// here is the evidence that the configuration does not move with this input.
+int probe_input_motion(const NetworkClosure& system, const Eigen::VectorXd& q, int input, double delta = 1e-3,
+                       double tolerance = 1e-12);
+
 }  // namespace rigidfold

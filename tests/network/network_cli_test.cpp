@@ -1,6 +1,8 @@
 // rigidfold network: JSON output of the seed-003 examples, and bad input -> exit 2.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.hpp"
@@ -42,6 +44,21 @@ TEST(NetworkCli, TextOutput) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("mobility: DOF 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("verdict: mobile"), std::string::npos);
+}
+
+TEST(NetworkCli, FlatTriangleIsSingularNotMobile) {
+  const std::string path = ::testing::TempDir() + "rigidfold_flat_triangle.json";
+  {
+    std::ofstream f(path);
+    f << R"({"linkages": [{"twists_deg": [120, 120, 120], "joints": ["a", "b", "c"]}], "input": {"joint": "a", "start_deg": 0}})";
+  }
+  const auto r = test::run_command(test::cli() + " network " + path + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["mobility"]["dof"], 1);
+  EXPECT_EQ(j["mobility"]["input_moves_1e-3_rad"], 0);
+  EXPECT_EQ(j["verdict"].get<std::string>().rfind("singular", 0), 0u) << j["verdict"];
+  std::remove(path.c_str());
 }
 
 TEST(NetworkCli, BadInputExitsTwoNamingThePlace) {

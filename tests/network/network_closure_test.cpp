@@ -237,5 +237,26 @@ TEST(NetworkClosure, TableA4ConditionsAreTheFlatPanel) {
   EXPECT_GT(std::fabs(L[0].twists[0] + L[1].twists[1] + L[2].twists[2] + L[3].twists[3] - 2 * pi), 0.05);
 }
 
+// A flat degree-3 "vertex" (120, 120, 120 deg) closes at the flat state with first-order
+// DOF 1 (its three axes lie in one plane), but it is rigid: the input does not move. The
+// Fig 2-7 network moves both ways from its start.
+TEST(NetworkClosure, ProbeSeparatesSingularFromMobile) {
+  LinkageNetwork tri;
+  tri.joint_names = {"a", "b", "c"};
+  const double t = 2 * pi / 3;
+  tri.linkages.push_back({"T", {t, t, t}, {{0, 1, 0}, {1, 1, 0}, {2, 1, 0}}});
+  const NetworkClosure st(tri);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3);
+  EXPECT_LE(st.residual(zero).lpNorm<Eigen::Infinity>(), 1e-15);
+  EXPECT_EQ(network_mobility(st, zero).dof, 1);
+  EXPECT_EQ(probe_input_motion(st, zero, 0), 0);
+
+  const NetworkSpec spec = load("fig2-7_rotation.json");
+  const NetworkClosure system(spec.network);
+  const NetworkConfiguration c = find_network_configuration(system, spec.input, spec.input_start, spec.guess);
+  ASSERT_TRUE(c.found);
+  EXPECT_EQ(probe_input_motion(system, c.q, spec.input), 2);
+}
+
 }  // namespace
 }  // namespace rigidfold
