@@ -148,7 +148,7 @@ TEST_P(NetworkMobile, ClosesWithOneDof) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seed003, NetworkMobile,
-                         ::testing::Values("fig2-7_rotation.json", "eq2-34.json", "a4_R3R13R12.json", "a4_R4R11R5.json",
+                         ::testing::Values("fig2-7_rotation.json", "fig2-5_twofold.json", "eq2-34.json", "a4_R3R13R12.json", "a4_R4R11R5.json",
                                            "a4_R4R10R16.json", "a4_R4R9R12.json"));
 
 // The rotation case's transmission closes for identical linkages (2-26): driving a1 and
@@ -235,6 +235,24 @@ TEST(NetworkClosure, TableA4ConditionsAreTheFlatPanel) {
   EXPECT_EQ(network_mobility(system, c.q).dof, 1);
   const auto& L = s.network.linkages;
   EXPECT_GT(std::fabs(L[0].twists[0] + L[1].twists[1] + L[2].twists[2] + L[3].twists[3] - 2 * pi), 0.05);
+}
+
+// The two-fold-symmetric case (Path1, (2-15)) of identical linkages: by the central symmetry
+// (2-10) the transmission a1 -> a2 -> b1 -> c2 -> d1 -> a1 closes with b1 = -a1, c2 = a2 on
+// the traced branch, so it is mobile for any twists (no extra condition for identical ones).
+TEST(NetworkClosure, TwofoldSymmetricFollowsCentralSymmetry) {
+  const NetworkSpec spec = load("fig2-5_twofold.json");
+  const NetworkClosure system(spec.network);
+  const NetworkConfiguration c = find_network_configuration(system, spec.input, spec.input_start, spec.guess);
+  ASSERT_TRUE(c.found);
+  const NetworkTrace tr = trace_network(system, c.q, spec.input, spec.input_end, 6);
+  ASSERT_TRUE(tr.complete);
+  const LinkageNetwork& net = system.network();
+  const int a1 = net.joint_index("a1"), a2 = net.joint_index("a2"), b1 = net.joint_index("b1"), c2 = net.joint_index("c2");
+  for (const NetworkTracePoint& p : tr.points) {
+    EXPECT_LT(angle_gap(p.q[b1], -p.q[a1]), 1e-10);
+    EXPECT_LT(angle_gap(p.q[c2], p.q[a2]), 1e-10);
+  }
 }
 
 // A flat degree-3 "vertex" (120, 120, 120 deg) closes at the flat state with first-order
