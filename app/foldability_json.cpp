@@ -210,7 +210,15 @@ Json foldability_json(const FoldabilityReport& r) {
   if (!r.search_evidence.empty()) {
     Json ev = Json::array();
     for (const AmplitudeEvidence& e : r.search_evidence)
-      ev.push_back({{"amplitude_rad", e.amplitude}, {"least_residual_rad", e.least_residual}, {"driving_crease", e.driving_edge}});
+    {
+      Json one = {{"amplitude_rad", e.amplitude},
+                  {"least_residual_rad", e.least_residual},
+                  {"driving_crease", e.driving_edge},
+                  {"explained_by_rounding", e.explained_by_rounding}};
+      if (e.norm_search_residual >= 0) one["norm_search_residual_rad"] = e.norm_search_residual;
+      if (e.rounding_ratio >= 0) one["rounding_ratio"] = e.rounding_ratio;
+      ev.push_back(std::move(one));
+    }
     j["search_evidence"] = {{"sign_respecting_least_squares", ev},
                             {"growth_exponent", r.residual_growth_exponent},
                             {"evidence_floor_rad", r.tolerances.evidence_floor}};

@@ -90,9 +90,8 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
   ip.explained = witness->explained;
   ip.exact_data_verdict = "not foldable from the given state as read: it is no configuration of the exact data (closure gap " +
                           short_text(witness->given_residual) + " rad), and its flat state is none either";
-  const std::string precision_text = "coordinates written with " + std::to_string(ip.decimal_places) + " decimals (rounding <= " +
-                                     short_text(ip.coordinate_rounding) + "), sectors known to " + short_text(ip.max_sector_bound) +
-                                     " rad";
+  const std::string precision_text =
+      describe_precision(witness->precision) + ", sectors known to " + short_text(ip.max_sector_bound) + " rad";
   if (!witness->explained) {
     r.verdict = FoldabilityClass::kUndecided;
     r.is_proof = false;
@@ -204,7 +203,7 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
       w.drawn_point_bounds
           ? "points drawn with " + std::to_string(ip.decimal_places) + " decimals (each vertex within the box of the points drawn for it, "
             "grown by their rounding: half-width <= " + short_text(ip.coordinate_rounding) + ")"
-          : "coordinates written with " + std::to_string(ip.decimal_places) + " decimals (rounding <= " + short_text(ip.coordinate_rounding) + ")";
+          : describe_precision(w.precision);
   const std::string witness_text =
       bounds_text + "; moving each coordinate by at most " + short_text(ip.max_coordinate_move) + " (" + short_text(ip.max_change_ratio) +
       " of its allowed move) makes every vertex flat-foldable (largest Kawasaki defect as read " + short_text(ip.given_residual) +

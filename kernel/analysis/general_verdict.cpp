@@ -9,9 +9,11 @@
 #include <sstream>
 
 #include "kernel/analysis/path_watch.hpp"
+#include "kernel/analysis/rounding_residual_bound.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/solve/amplitude_search.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/bordered_determinant.hpp"
 #include "kernel/solve/portable_random.hpp"
@@ -208,10 +210,18 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     for (std::size_t d = 0; d < drivers.size(); ++d) {
       unit_starts.push_back(signed_start(sys, sign, opt, erng) / opt.start_max);
     }
+    // Letters as bounds for the norm search (U: either side; at most a half turn).
+    Eigen::VectorXd lower(n), upper(n);
+    for (int i = 0; i < n; ++i) {
+      lower[i] = bounds[i] > 0 ? 0.0 : -std::numbers::pi;
+      upper[i] = bounds[i] < 0 ? 0.0 : std::numbers::pi;
+    }
+    std::vector<Eigen::VectorXd> best_x;  // per amplitude: the state of the least residual
     for (double eps : opt.evidence_amplitudes) {
       AmplitudeEvidence ev;
       ev.amplitude = eps;
       ev.least_residual = std::numeric_limits<double>::infinity();
+      Eigen::VectorXd best;
       for (std::size_t d = 0; d < drivers.size(); ++d) {
         const int e = drivers[d];
         const int k = sys.unknown_of_edge(e);
@@ -238,11 +248,51 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
         if (res < ev.least_residual) {
           ev.least_residual = res;
           ev.driving_edge = e;
-          if (out.evidence.empty()) evidence_x = nr.x;  // the largest amplitude's: worst vertices
+          best = nr.x;
         }
       }
+      // The norm search: no crease held, ||x||_2 = eps (a motion may leave every driving crease flat).
+      for (int s = 0; s < opt.norm_search_starts && candidates.empty(); ++s) {
+        report_progress(opt.progress, [&] {
+          return "evidence search: norm-constrained least squares at fold amplitude " + progress_degrees(eps) +
+                 " deg, start " + std::to_string(s + 1) + " of " + std::to_string(opt.norm_search_starts);
+        });
+        Eigen::VectorXd x0 = signed_start(sys, sign, opt, erng);
+        x0 *= eps / x0.norm();
+        AmplitudeSearchOptions ao;
+        ao.amplitude = eps;
+        ao.tolerance = opt.tolerances.residual;
+        ao.max_iterations = opt.norm_search_iterations;
+        const AmplitudeSearchResult ar = amplitude_search(sys, x0, lower, upper, ao);
+        ++out.starts_tried;
+        if (ev.norm_search_residual < 0 || ar.closure_residual < ev.norm_search_residual)
+          ev.norm_search_residual = ar.closure_residual;
+        if (ar.converged &&
+            first_crease_against_letter(sign, sys.edges_from_unknowns(ar.x), opt.tolerances.sign_threshold) < 0) {
+          ++out.starts_converged;
+          Eigen::Index k = 0;
+          ar.x.cwiseAbs().maxCoeff(&k);
+          candidates.push_back({ar.x, sys.edge_of_unknown(static_cast<int>(k))});
+        }
+        if (ar.closure_residual < ev.least_residual) {
+          ev.least_residual = ar.closure_residual;
+          ev.driving_edge = -1;
+          best = ar.x;
+        }
+      }
+      if (out.evidence.empty()) evidence_x = best;  // the largest amplitude's: worst vertices
       out.evidence.push_back(ev);
+      best_x.push_back(best);
       if (!candidates.empty()) break;
+    }
+    // Does the rounding of the coordinates explain the least residual (header, step 5)?
+    if (candidates.empty()) {
+      for (std::size_t a = 0; a < out.evidence.size(); ++a) {
+        if (best_x[a].size() != n) continue;
+        const RoundingResidualCheck rc = rounding_explains_residual(pattern, topology, sys.edges_from_unknowns(best_x[a]));
+        out.evidence[a].explained_by_rounding = rc.explained;
+        out.evidence[a].rounding_ratio = rc.worst_ratio;
+      }
     }
   }
 
@@ -251,7 +301,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     why << "no folded point found near flat (" << out.starts_tried << " starts, " << drivers.size()
         << " driving creases held at " << opt.held_value << " rad, then sign-respecting least squares at";
     for (const AmplitudeEvidence& ev : out.evidence) why << " " << ev.amplitude;
-    why << " rad)";
+    why << " rad, with the driving creases held and with the fold's norm fixed)";
     if (out.starts_wrong_sign > 0)
       why << "; " << out.starts_wrong_sign << " converged only against the assignment (e.g. crease "
           << out.wrong_sign_crease << ")";
@@ -274,8 +324,19 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
                               std::log(out.evidence[0].amplitude / out.evidence[1].amplitude);
         why << ", growing like amplitude^" << out.growth_exponent;
       }
-      evidence = above_floor && out.evidence.size() >= 2 && out.growth_exponent >= opt.min_growth_exponent;
-      if (!above_floor)
+      // The two largest amplitudes carry the evidence (a second-order obstruction, ~eps^2, falls
+      // below the rounding's first-order gap, ~eps, at small enough eps).
+      const auto judged_end = out.evidence.begin() + std::min<std::ptrdiff_t>(2, std::ssize(out.evidence));
+      const auto found = std::find_if(out.evidence.begin(), judged_end,
+                                      [](const AmplitudeEvidence& ev) { return ev.explained_by_rounding; });
+      const auto explained = found == judged_end ? out.evidence.end() : found;
+      evidence = above_floor && out.evidence.size() >= 2 && out.growth_exponent >= opt.min_growth_exponent &&
+                 explained == out.evidence.end();
+      if (explained != out.evidence.end())
+        why << " - at " << explained->amplitude << " rad the rounding of the file's coordinates can explain it (every "
+            << "vertex's gap within the one its sectors' rounding can cause there; the largest "
+            << explained->rounding_ratio << " of it): no evidence either way";
+      else if (!above_floor)
         why << " - below the evidence floor " << opt.tolerances.evidence_floor
             << ": the search stopped near its own threshold, which is no evidence either way";
       else if (!evidence)

@@ -38,13 +38,18 @@
 //     (largest first) and each driving crease, sign-respecting least squares (projected
 //     Gauss-Newton, NewtonOptions::sign_bounds: a valley stays >= 0, a mountain <= 0) from
 //     the first start scaled to eps, the driving crease held at +-eps. A converged point is
-//     a candidate (traced as in 3-4). Otherwise the least residual per amplitude is the
-//     evidence, and
+//     a candidate (traced as in 3-4). Then, at the same amplitude, the norm search
+//     (amplitude_search: ||x||_2 = eps over all unknowns, letters as bounds, no crease held)
+//     from norm_search_starts starts; a converged point with its letters kept is a candidate
+//     too. Otherwise the least residual per amplitude (both searches) is the evidence, and
 //       - kNotRigidlyFoldable (numerical evidence, is_proof false) only when the least
 //         residual at the largest amplitude is at least tolerances.evidence_floor AND it
 //         grows with the amplitude like an obstruction, residual ~ eps^p with
 //         p >= min_growth_exponent between the two largest amplitudes (a closure gap forced
-//         by the geometry scales with the fold; a search that stalled does not);
+//         by the geometry scales with the fold; a search that stalled does not) AND the
+//         rounding of the file's coordinates does not explain the least residual at either
+//         of those two amplitudes (rounding_residual_bound.hpp at the best state: a float32 file's 1e-6 rad
+//         sector errors leave ~1e-8 x eps of closure gap, which also grows with eps);
 //       - kUndecided otherwise: a least residual near the floor, or one that does not grow
 //         with the fold, is a search that stopped, not evidence of rigidity.
 //     The obstruction reported: the least residual (largest amplitude) and the interior
@@ -92,6 +97,11 @@ struct GeneralVerdictOptions {
   // exponent of the least residual between the two largest that counts as an obstruction.
   std::vector<double> evidence_amplitudes{0.1, 0.01, 0.001};
   double min_growth_exponent = 0.5;
+  // ... and at each amplitude this many starts of the norm search (amplitude_search.hpp:
+  // ||x||_2 = eps over all unknowns, letters as bounds), which finds motions that leave the
+  // driving creases flat.
+  int norm_search_starts = 2;
+  int norm_search_iterations = 80;
   // DOF-1 tracing: steps of at most 0.1 rad in any crease (a fixed arclength of 0.25 took
   // ~5,000 points, 23 s, on a 50 x 50 Miura); on small patterns this is about the old step.
   ContinuationOptions continuation = [] {
@@ -111,9 +121,15 @@ struct SingularPoint {
 
 // The least sign-respecting closure residual found at one fold amplitude (step 5).
 struct AmplitudeEvidence {
-  double amplitude = 0.0;       // |driving crease| held (radians)
-  double least_residual = 0.0;  // least ||r||_inf over the driving creases tried (radians)
-  int driving_edge = -1;        // where it was reached
+  double amplitude = 0.0;       // |driving crease| held, and ||x||_2 of the norm search (radians)
+  double least_residual = 0.0;  // least ||r||_inf over both searches at this amplitude (radians)
+  int driving_edge = -1;        // where it was reached (-1: by the norm search)
+  double norm_search_residual = -1.0;  // least ||r||_inf of the norm search alone (-1: not run)
+  // The rounding of the file's coordinates can explain the least residual: at the best state
+  // found, every vertex's gap is within what its sectors' rounding can cause there
+  // (rounding_residual_bound.hpp).
+  bool explained_by_rounding = false;
+  double rounding_ratio = -1.0;  // max over vertices of gap / that bound (<= 1: explained)
 };
 
 // Which lettered creases a certificate leaves flat: strict foldability folds every one of

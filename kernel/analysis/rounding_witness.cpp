@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernel/analysis/rounding_residual_bound.hpp"
 #include "kernel/math/so3.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
 
@@ -34,21 +35,15 @@ RoundingWitness rounding_witness(const CreasePattern& p, const Topology& t, cons
   w.precision = coordinate_precision(p);
   w.witness = t;
   w.explained = true;
-  for (int v : t.interior_vertices) {
+  const std::vector<std::vector<double>> bounds = sector_rounding_bounds(p, t, w.precision);
+  for (std::size_t k = 0; k < t.interior_vertices.size(); ++k) {
+    const int v = t.interior_vertices[k];
     Fan& fan = w.witness.stars[v].fans[0];
     const int n = static_cast<int>(fan.edges.size());
-    std::vector<double> rho(n), bound(n);
+    std::vector<double> rho(n);
     for (int i = 0; i < n; ++i) rho[i] = given[fan.edges[i]];
-    auto reach = [&](int e) {
-      const int other = p.edges[e][0] == v ? p.edges[e][1] : p.edges[e][0];
-      const double len = (p.vertices[other] - p.vertices[v]).norm();
-      const double moved = 2.0 * std::sqrt(3.0) * std::max(w.precision.vertex_rounding[v], w.precision.vertex_rounding[other]);
-      return len > 0 ? std::asin(std::min(1.0, moved / len)) : 1.0;
-    };
-    for (int i = 0; i < n; ++i) {
-      bound[i] = reach(fan.edges[i]) + reach(fan.edges[(i + 1) % n]);
-      w.max_sector_bound = std::max(w.max_sector_bound, bound[i]);
-    }
+    const std::vector<double>& bound = bounds[k];
+    for (int i = 0; i < n; ++i) w.max_sector_bound = std::max(w.max_sector_bound, bound[i]);
     const std::vector<double> measured = fan.sectors;
     std::vector<double>& sec = fan.sectors;
     Eigen::Vector3d r;

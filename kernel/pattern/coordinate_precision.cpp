@@ -50,6 +50,27 @@ CoordinatePrecision coordinate_precision(const CreasePattern& p) {
   out.significant_digits = max_significant;
   out.rounded = !beyond_decimals && max_significant <= 15;
   out.vertex_rounding.assign(p.vertices.size(), 0.0);
+  if (!out.rounded) {
+    bool all_float = !p.vertices.empty();
+    double scale = 0.0;
+    for (const Eigen::Vector3d& v : p.vertices)
+      for (int k = 0; k < 3; ++k) {
+        const double c = v[k] * unit;
+        all_float = all_float && std::isfinite(c) && static_cast<double>(static_cast<float>(c)) == c;
+        scale = std::max(scale, std::abs(c));
+      }
+    if (all_float && scale > 0) {
+      out.single_precision = out.rounded = true;
+      out.significant_digits = 8;  // a float32 carries 24 bits: 7.2 decimal digits
+      for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+        double m = 0.0;
+        for (int k = 0; k < 3; ++k) m = std::max(m, std::abs(p.vertices[i][k] * unit));
+        out.vertex_rounding[i] = (std::ldexp(scale, -24) + std::ldexp(m, -51)) / unit;
+        out.max_rounding = std::max(out.max_rounding, out.vertex_rounding[i]);
+      }
+      return out;
+    }
+  }
   for (std::size_t i = 0; i < p.vertices.size(); ++i)
     for (int k = 0; k < 3; ++k) {
       const double c = p.vertices[i][k] * unit;
@@ -62,6 +83,13 @@ CoordinatePrecision coordinate_precision(const CreasePattern& p) {
       out.max_rounding = std::max(out.max_rounding, u);
     }
   return out;
+}
+
+std::string describe_precision(const CoordinatePrecision& precision) {
+  char bound[32];
+  std::snprintf(bound, sizeof bound, "%.3g", precision.max_rounding);
+  if (precision.single_precision) return std::string("float32 coordinates (rounding <= ") + bound + ")";
+  return "coordinates written with " + std::to_string(precision.decimal_places) + " decimals (rounding <= " + bound + ")";
 }
 
 }  // namespace rigidfold

@@ -17,7 +17,15 @@
 // its neighbours (0.25 among 0.466968) is an exact value or rounded the same way; both
 // readings cover it.
 //
+// Single precision: a file whose every coordinate is exactly a float32 value, and not all
+// short decimals, was written from float32 numbers (Origami Simulator's exports: 0.7071067690849304
+// for sqrt(1/2)). Their rounding is half a float32 ulp of the value; the writer computed them
+// in float32 too (a flat sheet rotated into 3D carries 1e-22 in place of 0), so the bound
+// taken is half an ulp at the sheet's scale, u = 2^-24 max|c| over the file, for every
+// coordinate (plus the two double ulps).
+//
 // Units: the pattern's length unit (coordinates as stored in CreasePattern::vertices).
+#include <string>
 #include <vector>
 
 #include "kernel/pattern/crease_pattern.hpp"
@@ -32,7 +40,12 @@ struct CoordinatePrecision {
   // True when every coordinate needs at most 15 significant digits: the file was rounded
   // (a full double needs 16-17 digits for most values).
   bool rounded = false;
+  bool single_precision = false;  // every coordinate is a float32 value (see above); rounded too
 };
+
+// One phrase for reports: "coordinates written with 6 decimals (rounding <= 5e-07)" or
+// "float32 coordinates (rounding <= 4.2e-08)".
+std::string describe_precision(const CoordinatePrecision& precision);
 
 CoordinatePrecision coordinate_precision(const CreasePattern& pattern);
 
