@@ -61,7 +61,7 @@ NetworkSpec parse_network_json(const json& doc, const std::string& source) {
   const json& ls = doc["linkages"];
   if (!ls.is_array() || ls.empty()) throw InputError(at(source, "linkages"), "must be a non-empty array");
   if (ls.size() > static_cast<std::size_t>(kMaxNetworkLinkages))
-    throw InputError(at(source, "linkages"), "more than 500 linkages");
+    throw InputError(at(source, "linkages"), "more than 200 linkages");
   LinkageNetwork& net = spec.network;
   for (std::size_t k = 0; k < ls.size(); ++k) {
     std::string lp = "linkages[";
@@ -77,7 +77,7 @@ NetworkSpec parse_network_json(const json& doc, const std::string& source) {
     const json& tw = l["twists_deg"];
     const json& js = l["joints"];
     if (!tw.is_array() || tw.size() < 3 || tw.size() > static_cast<std::size_t>(kMaxLinkageJoints))
-      throw InputError(at(source, lp + ".twists_deg"), "must be an array of 3 to 64 twists");
+      throw InputError(at(source, lp + ".twists_deg"), "must be an array of 3 to 16 twists");
     if (!js.is_array() || js.size() != tw.size())
       throw InputError(at(source, lp + ".joints"), "must be an array with one joint per twist");
     std::set<int> here;

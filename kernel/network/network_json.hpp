@@ -44,9 +44,10 @@ struct NetworkSpec {
   Eigen::VectorXd guess;           // size num_joints (radians), 0 where not given
 };
 
-// Largest linkage count and joints per linkage accepted (the dense rank check is O(n^3)).
-inline constexpr int kMaxNetworkLinkages = 500;
-inline constexpr int kMaxLinkageJoints = 64;
+// Largest linkage count and joints per linkage accepted: the configuration search runs up to
+// 65 Newton solves and every traced point a rank check, so an input stays within seconds.
+inline constexpr int kMaxNetworkLinkages = 200;
+inline constexpr int kMaxLinkageJoints = 16;
 
 NetworkSpec parse_network_json(const nlohmann::json& doc, const std::string& source);
 // read_input_file + parse_json_input + parse_network_json.
