@@ -115,4 +115,25 @@ VariantRelation classify_twist_variant(const S4RSectors& base, const S4RSectors&
   return out;
 }
 
+std::vector<std::vector<int>> closing_transmissions(int length) {
+  if (length < 2 || length > 6) throw std::invalid_argument("closing_transmissions: length must be in 2..6");
+  std::vector<std::vector<int>> out;
+  std::vector<int> chain;
+  // Depth-first over the 16 types; `carried` is the substitution carried by the shared joint.
+  auto extend = [&](auto&& self, AngleVariant carried) -> void {
+    const bool last = static_cast<int>(chain.size()) == length - 1;
+    for (const RelationType& t : relation_types()) {
+      if (t.number == 1 || t.input != carried) continue;
+      const bool back = t.output == AngleVariant::kSame;
+      if (back != last) continue;
+      chain.push_back(t.number);
+      if (last) out.push_back(chain);
+      else self(self, t.output);
+      chain.pop_back();
+    }
+  };
+  extend(extend, AngleVariant::kSame);
+  return out;
+}
+
 }  // namespace rigidfold

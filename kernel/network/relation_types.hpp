@@ -56,4 +56,13 @@ struct VariantRelation {
 VariantRelation classify_twist_variant(const S4RSectors& base, const S4RSectors& variant, int samples = 24,
                                        double tolerance = 1e-9);
 
+// Transmission chains of the rotation case (seed 003 §2.4, Table 2-4): sequences of
+// `length` relation types Rk_1 - ... - Rk_L along the path theta_1^a -> ... -> theta_1^a
+// whose substitutions cancel, so the loop of variant linkages closes whenever the base loop
+// does: Rk_1's input is x, each output equals the next type's input, the last output is x;
+// non-trivial (no R1, and no partial chain already back at x before the end).
+// Returned in lexicographic order of the type numbers. Throws std::invalid_argument if
+// length < 2 or > 6.
+std::vector<std::vector<int>> closing_transmissions(int length);
+
 }  // namespace rigidfold

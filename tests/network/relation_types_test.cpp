@@ -55,6 +55,14 @@ TEST(NetworkRelationTypes, Example26RealisesR3) {
   EXPECT_EQ(classify_twist_variant(kFig21, kFig21).realised, (std::vector<int>{1, 9}));
 }
 
+// Table 2-4 (rotation case) by enumeration: three 2R and nine 3R transmissions.
+TEST(NetworkRelationTypes, RotationTransmissionsAreTable24) {
+  using C = std::vector<std::vector<int>>;
+  EXPECT_EQ(closing_transmissions(2), (C{{2, 5}, {3, 16}, {4, 12}}));
+  EXPECT_EQ(closing_transmissions(3), (C{{2, 6, 5}, {2, 7, 16}, {2, 8, 12}, {3, 13, 12}, {3, 14, 16}, {3, 15, 5},
+                                         {4, 9, 12}, {4, 10, 16}, {4, 11, 5}}));
+}
+
 // The digest's statement, by enumeration: 128 of the 256 variants realise one of R1..R8,
 // 16 each (each also R(i+8), nothing else); the other 128 realise no type, clearly.
 void expect_counts(const S4RSectors& base) {
