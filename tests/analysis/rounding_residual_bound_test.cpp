@@ -5,10 +5,12 @@
 // the rounding really leaves at exact states, not assumed.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <iostream>
 
 #include "data/generators/miura.hpp"
+#include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/rounding_residual_bound.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
@@ -148,6 +150,45 @@ TEST(AmplitudeSearch, RejectsBadArguments) {
   EXPECT_THROW(amplitude_search(sys, z, one, -one, o), std::invalid_argument);
   o.amplitude = 0.0;
   EXPECT_THROW(amplitude_search(sys, z, -one, one, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// The verdict on a pattern whose motion needs its exact geometry (a Miura-ori turned by 0.3
+// rad in its plane, so that no crease line stays parallel to an axis), written with 4
+// decimals: the rounding leaves no exact motion (unturned, it would keep every straight line
+// straight, and the pattern folds), the searches close only to the rounding's gap, and that
+// gap is no evidence of rigidity. The same geometry in double precision folds (certified),
+// and a gap the geometry forces (vertices moved by 1e-2, float32) is still evidence.
+TEST(GeneralVerdictRounding, RoundedMiuraIsNotCalledRigid) {
+  generators::MiuraParams m = miura_3x3();
+  m.rows = m.cols = 4;
+  CreasePattern exact = generators::miura_ori(m);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for (Eigen::Vector3d& v : exact.vertices) v = turn * v;
+  {
+    const GeneralVerdict g = general_verdict(exact, build_topology(exact));
+    EXPECT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
+  }
+  const CreasePattern p = rounded_to_decimals(exact, 4);
+  const GeneralVerdict g = general_verdict(p, build_topology(p));
+  std::cout << "    turned Miura 4x4 at 4 decimals: " << g.reason << "\n";
+  EXPECT_EQ(g.verdict, Verdict::kUndecided) << g.reason;
+  ASSERT_FALSE(g.evidence.empty()) << g.reason;
+  EXPECT_TRUE(g.evidence[0].explained_by_rounding);
+  EXPECT_GT(g.evidence[0].least_residual, 1e-12);  // the rounding did leave a gap
+
+  m.perturbation = 1e-2;
+  const CreasePattern bent = as_float32(generators::miura_ori(m));
+  const GeneralVerdict gb = general_verdict(bent, build_topology(bent));
+  std::cout << "    perturbed float32 Miura 4x4: " << gb.reason << "\n";
+  EXPECT_EQ(gb.verdict, Verdict::kNotRigidlyFoldable) << gb.reason;
+  ASSERT_FALSE(gb.evidence.empty());
+  EXPECT_FALSE(gb.evidence[0].explained_by_rounding);
 }
 
 }  // namespace
