@@ -5,7 +5,14 @@
 // (DOF, locked vertices, vertices off the zero-thickness motion) and, when it moves, a
 // short trace from flat compared with the zero-thickness motion (first branch of
 // trace_motion, up to 90 deg of its driving crease; --reverse: traced the other way from
-// flat). Every state printed closes to 1e-10.
+// flat). Every state printed closes to 1e-10. Past the trace, the zero-thickness states up to
+// the end of its path (180 deg where it folds flat) that close on the thick sheet as they are
+// (trace.extension); slab interference (FCL) at flat, every trace step and every extension
+// state (slab_interference: passed, margin, first colliding pair with its state, driving
+// angle and shared crease); the stacking order at the end of that path (stacking: per crease
+// which side each panel lies on and whether that is its letter's; folded flat: the panels
+// bottom to top with their layers and the least gap between overlapping ones). Every check
+// lives in the kernel (kernel/thick/thick_run.hpp): this file parses, calls run_thick, prints.
 //
 // --out writes the thick sheet (thick_sheet_from_hinge_heights: vertices truncated into
 // holes, hinge edges 0..E-1 at their heights, 3D) as FOLD with two extension keys:
@@ -35,6 +42,7 @@
 #include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/thick/thick_report.hpp"
+#include "kernel/thick/thick_run.hpp"
 #include "kernel/thick/thick_slabs.hpp"
 
 namespace rigidfold::cli {
@@ -54,6 +62,78 @@ nlohmann::ordered_json fold_angles_deg(const Eigen::VectorXd& rho) {
   nlohmann::ordered_json a = nlohmann::ordered_json::array();
   for (Eigen::Index e = 0; e < rho.size(); ++e) a.push_back(to_degrees(rho[e]));
   return a;
+}
+
+const char* side_name(int side) { return side > 0 ? "top" : (side < 0 ? "bottom" : "level"); }
+
+// Slab interference along flat + trace + extension (kernel/thick/slab_interference.hpp).
+nlohmann::ordered_json interference_json(const CreasePattern& p, const ThickReport& r) {
+  const SlabInterference& in = r.interference;
+  nlohmann::ordered_json j;
+  j["passed"] = in.passed();
+  j["margin"] = to_file_units(p, in.margin);
+  j["states_checked"] = in.states.size();
+  int colliding = 0;
+  for (const SlabInterferenceState& s : in.states) colliding += s.collisions.empty() ? 0 : 1;
+  j["colliding_states"] = colliding;
+  j["collisions"] = in.collision_count;
+  if (in.first_state >= 0) {
+    const SlabInterferenceState& s = in.states[in.first_state];
+    const SlabCollision& c = s.collisions.front();
+    nlohmann::ordered_json first;
+    first["state"] = in.first_state;
+    first["drive_deg"] = to_degrees(s.drive);
+    first["faces"] = {c.face_a, c.face_b};
+    first["shared_crease"] = c.shared_edge >= 0 ? nlohmann::ordered_json(c.shared_edge) : nlohmann::ordered_json();
+    // The state's fold angles: flat (0), then the trace, then the extension.
+    const int k = in.first_state;
+    const int nt = static_cast<int>(r.trace.size());
+    const Eigen::VectorXd* rho = k == 0 ? nullptr : (k - 1 < nt ? &r.trace[k - 1].rho : &r.extension[k - 1 - nt].rho);
+    first["shared_crease_fold_deg"] =
+        c.shared_edge >= 0 ? nlohmann::ordered_json(rho ? to_degrees((*rho)[c.shared_edge]) : 0.0) : nlohmann::ordered_json();
+    j["first"] = first;
+  }
+  nlohmann::ordered_json per = nlohmann::ordered_json::array();
+  for (const SlabInterferenceState& s : in.states) {
+    nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
+    for (const SlabCollision& c : s.collisions)
+      pairs.push_back({c.face_a, c.face_b, c.shared_edge >= 0 ? nlohmann::ordered_json(c.shared_edge) : nlohmann::ordered_json()});
+    per.push_back({{"drive_deg", to_degrees(s.drive)}, {"pairs", pairs}});
+  }
+  j["states"] = per;
+  return j;
+}
+
+// Stacking at the end of the path (kernel/thick/stacking_order.hpp).
+nlohmann::ordered_json stacking_json(const CreasePattern& p, const ThickReport& r) {
+  const StackingOrder& st = r.stacking;
+  nlohmann::ordered_json j;
+  j["at_drive_deg"] = to_degrees(r.end.drive);
+  j["end_of"] = r.end_is_extension ? "extension" : (r.trace.empty() ? "flat state" : "trace");
+  j["flat_folded"] = st.flat_folded;
+  j["max_tilt_rad"] = st.max_tilt;
+  j["letter_disagreements"] = st.letter_disagreements;
+  nlohmann::ordered_json creases = nlohmann::ordered_json::array();
+  for (const CreaseStacking& c : st.creases) {
+    nlohmann::ordered_json e;
+    e["edge"] = c.edge;
+    e["faces"] = {c.face_a, c.face_b};
+    e["b_side_of_a"] = side_name(c.b_side_of_a);
+    e["a_side_of_b"] = side_name(c.a_side_of_b);
+    e["agrees_with_letter"] = c.has_letter ? nlohmann::ordered_json(c.agrees_with_letter) : nlohmann::ordered_json();
+    creases.push_back(e);
+  }
+  j["creases"] = creases;
+  if (st.flat_folded) {
+    j["layers"] = st.layers;
+    nlohmann::ordered_json panels = nlohmann::ordered_json::array();
+    for (const StackedPanel& s : st.panels)
+      panels.push_back({{"face", s.face}, {"layer", s.layer}, {"low", to_file_units(p, s.low)}, {"high", to_file_units(p, s.high)}});
+    j["panels_bottom_to_top"] = panels;
+    j["overlapping_pairs"] = st.overlaps.size();
+    j["min_gap"] = to_file_units(p, st.min_gap);
+  }
+  return j;
 }
 
 }  // namespace
@@ -81,7 +161,6 @@ void add_thick_command(CLI::App& app) {
                 "compare with the zero-thickness motion traced the other way from flat (against the letters)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->callback([a] {
-    if (!(a->thickness > 0)) throw InputError("--thickness", "must be > 0");
     const ThickHinges hinges = parse_hinges(a->hinges);
     OutputSet outputs;
     outputs.add_input("PATTERN", a->pattern);
@@ -90,35 +169,26 @@ void add_thick_command(CLI::App& app) {
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
-    if (t.interior_vertices.empty()) throw InputError(a->pattern, "no interior vertex: nothing for thickness to change");
-    try {
-      require_flat_pattern(p);  // before the zero-thickness trace, which would run on a folded form
-    } catch (const InputError& e) {
-      throw InputError(a->pattern, e.message());
-    }
 
-    ThickReportRequest request;
-    request.thickness = std::ldexp(a->thickness, -p.length_exponent);  // file units -> the pattern's internal units
-    Eigen::Vector3d lo = p.vertices[0], hi = p.vertices[0];
-    for (const Eigen::Vector3d& v : p.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-    if (!(request.thickness <= (hi - lo).norm())) {
-      char m[160];
-      std::snprintf(m, sizeof m, "must be at most the pattern's diagonal, %.17g", to_file_units(p, (hi - lo).norm()));
-      throw InputError("--thickness", m);
-    }
-    request.hinges = hinges;
-    request.zero = zero_thickness_samples(p, t, 17, 1.5707963267948966, a->reverse);
-    ThickReport r;
+    ThickRunRequest run_request;
+    run_request.thickness = a->thickness;
+    run_request.hinges = hinges;
+    run_request.reverse = a->reverse;
+    if (!a->stl.empty()) run_request.slabs_at = to_radians(a->at);
+    ThickRun run;
     try {
-      r = thick_report(p, t, request);
+      run = run_thick(p, t, run_request);
     } catch (const InputError& e) {
       const std::string what = e.message();
       if (e.place() == "thickness") throw InputError("--thickness", what);
       if (e.place() == "hinges") throw InputError("--hinges", what);
       if (e.place() == "pattern") throw InputError(a->pattern, what);
+      if (e.place() == "at") throw InputError("--at", what);
       throw;
     }
-    const std::vector<PanelSlab> slabs = panel_slabs(p, t, r);
+    const ThickReportRequest& request = run.request;
+    const ThickReport& r = run.report;
+    const std::vector<PanelSlab>& slabs = r.slabs;
 
     nlohmann::ordered_json j;
     j["file"] = a->pattern;
@@ -162,7 +232,13 @@ void add_thick_command(CLI::App& app) {
                        {"fold_angles_deg", fold_angles_deg(s.rho)}});
     trace["steps"] = steps;
     if (!r.trace_note.empty()) trace["note"] = r.trace_note;
+    nlohmann::ordered_json extension = nlohmann::ordered_json::array();
+    for (const ThickTraceStep& s : r.extension)
+      extension.push_back({{"drive_deg", to_degrees(s.drive)}, {"residual", s.residual}});
+    trace["extension"] = extension;
     j["trace"] = trace;
+    j["slab_interference"] = interference_json(p, r);
+    j["stacking"] = stacking_json(p, r);
 
     if (!a->out.empty()) {
       nlohmann::ordered_json doc = fold_to_json(r.sheet.pattern);
@@ -176,28 +252,16 @@ void add_thick_command(CLI::App& app) {
       outputs.stage(a->out, dump_fold_json(doc));
       j["out"] = a->out;
     }
-    if (!a->stl.empty()) {
-      ThickTraceStep state;
-      try {
-        state = thick_state_at(r, to_radians(a->at));
-      } catch (const InputError& e) {
-        throw InputError("--at", e.message());
-      }
-      const FoldedGeometry placed = place_thick_sheet(r, state.rho);
-      if (!(placed.relative_mismatch() <= 1e-9)) {
-        char m[200];
-        std::snprintf(m, sizeof m, "the thick sheet placed at %.9g deg leaves cracks of %.3g of its size (> 1e-9)", a->at,
-                      placed.relative_mismatch());
-        throw NoAnswerError(m, placed.relative_mismatch());
-      }
-      outputs.stage(a->stl, polygons_stl(slab_polygons(p, r, slabs, placed), p.length_exponent, "rigidfold thick panels (binary STL)"));
+    if (run.at) {
+      const ThickSlabsAt& at = *run.at;
+      outputs.stage(a->stl, polygons_stl(at.polygons, p.length_exponent, "rigidfold thick panels (binary STL)"));
       nlohmann::ordered_json s;
       s["file"] = a->stl;
       s["drive_deg"] = a->at;
-      s["residual"] = state.residual;
-      s["relative_mismatch"] = placed.relative_mismatch();
-      s["dof"] = state.dof;
-      s["fold_angles_deg"] = fold_angles_deg(state.rho);
+      s["residual"] = at.state.residual;
+      s["relative_mismatch"] = at.placed.relative_mismatch();
+      s["dof"] = at.state.dof;
+      s["fold_angles_deg"] = fold_angles_deg(at.state.rho);
       j["stl"] = s;
     }
     outputs.commit();
@@ -224,6 +288,34 @@ void add_thick_command(CLI::App& app) {
       std::cout << line;
     }
     if (!r.trace_note.empty()) std::cout << "  " << r.trace_note << "\n";
+    if (!r.extension.empty()) {
+      std::snprintf(line, sizeof line, "  extension: %zu zero-thickness state(s) past the trace close on the thick sheet, to %.6g deg\n",
+                    r.extension.size(), to_degrees(r.extension.back().drive));
+      std::cout << line;
+    }
+    const SlabInterference& in = r.interference;
+    if (in.passed()) {
+      std::snprintf(line, sizeof line, "  slab interference: none at %zu states (margin %.3g)\n", in.states.size(),
+                    to_file_units(p, in.margin));
+    } else {
+      const SlabInterferenceState& s = in.states[in.first_state];
+      const SlabCollision& c = s.collisions.front();
+      std::snprintf(line, sizeof line,
+                    "  slab interference: %lld collision(s) over %zu states; first at %.6g deg: panels %d and %d%s%s\n",
+                    in.collision_count, in.states.size(), to_degrees(s.drive), c.face_a, c.face_b,
+                    c.shared_edge >= 0 ? " across crease " : " (no shared crease)",
+                    c.shared_edge >= 0 ? std::to_string(c.shared_edge).c_str() : "");
+    }
+    std::cout << line;
+    const StackingOrder& st = r.stacking;
+    if (st.flat_folded)
+      std::snprintf(line, sizeof line,
+                    "  stacking at %.6g deg (folded flat): %d layer(s), %zu overlapping pair(s), least gap %.3g, %d crease(s) against their letter\n",
+                    to_degrees(r.end.drive), st.layers, st.overlaps.size(), to_file_units(p, st.min_gap), st.letter_disagreements);
+    else
+      std::snprintf(line, sizeof line, "  stacking at %.6g deg (not folded flat, tilt %.3g rad): %d crease(s) against their letter\n",
+                    to_degrees(r.end.drive), st.max_tilt, st.letter_disagreements);
+    std::cout << line;
     if (!a->out.empty()) std::cout << "  thick sheet written to " << a->out << "\n";
     if (!a->stl.empty()) std::cout << "  slabs at " << a->at << " deg written to " << a->stl << "\n";
   });

@@ -1,5 +1,6 @@
 #include "kernel/thick/thick_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -12,6 +13,7 @@
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/rank.hpp"
 #include "kernel/thick/bennett_heights.hpp"
+#include "kernel/thick/thick_slabs.hpp"
 
 namespace rigidfold {
 
@@ -52,6 +54,10 @@ double largest_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b, in
   return worst;
 }
 
+void trace_from_flat(const ThickReportRequest& request, ThickReport& report);
+void extend_trace(const ThickReportRequest& request, ThickReport& report);
+void add_geometry(const CreasePattern& flat, const Topology& topology, const ThickReportRequest& request, ThickReport& report);
+
 }  // namespace
 
 const char* to_string(ThickHinges hinges) {
@@ -88,14 +94,45 @@ ZeroThicknessSamples zero_thickness_samples(const CreasePattern& flat, const Top
     return out;
   }
   for (const MotionStep& step : branch.steps) {
-    if (!(std::abs(step.drive) <= max_drive)) break;
     if (step.drive == 0.0) continue;
     if (!(step.residual <= 1e-10)) break;  // a state that does not pass its own check ends the samples
+    if (!(std::abs(step.drive) <= max_drive)) break;
     out.drive_angles.push_back(step.drive);
     out.states.push_back(step.rho);
     out.max_residual = std::max(out.max_residual, step.residual);
   }
-  if (out.states.empty()) out.note = "the zero-thickness trace has no state closed to 1e-10 rad within the drive range";
+  if (out.states.empty()) {
+    out.note = "the zero-thickness trace has no state closed to 1e-10 rad within the drive range";
+    return out;
+  }
+  // The same branch to the end (+-180 deg: the flat-folded state where the pattern reaches it)
+  // at the same spacing. Its states past the samples are kept only when it passes through
+  // every sample (same drive, fold angles within 1e-9 rad): the same branch, not another.
+  TraceRequest to_end = request;
+  to_end.drive = branch.drive;
+  to_end.to = (branch.to > 0 ? 1.0 : -1.0) * kPi;
+  to_end.steps = static_cast<int>(std::lround(kPi / std::abs(out.drive_angles[0])));
+  const MotionTrace full = trace_motion(flat, topology, to_end);
+  if (full.branches.empty() || !full.branches[0].traced) return out;
+  const std::vector<MotionStep>& steps_to_end = full.branches[0].steps;
+  std::size_t matched = 0;
+  for (const MotionStep& step : steps_to_end) {
+    if (matched < out.states.size()) {
+      if (std::abs(step.drive - out.drive_angles[matched]) <= 1e-12) {
+        if (!((step.rho - out.states[matched]).cwiseAbs().maxCoeff() <= 1e-9)) return out;
+        ++matched;
+      }
+      continue;
+    }
+    if (!(std::abs(step.drive) > std::abs(out.drive_angles.back()))) continue;
+    if (!(step.residual <= 1e-10)) break;
+    out.further_drive_angles.push_back(step.drive);
+    out.further_states.push_back(step.rho);
+  }
+  if (matched < out.states.size()) {
+    out.further_drive_angles.clear();
+    out.further_states.clear();
+  }
   return out;
 }
 
@@ -148,21 +185,31 @@ ThickReport thick_report(const CreasePattern& flat, const Topology& topology, co
   const Eigen::VectorXd flat_state = Eigen::VectorXd::Zero(flat.num_edges());
   report.mobility = thick_mobility(report.sheet, flat_state, zero.states, request.closure_tolerance);
   report.drive = zero.drive;
+  trace_from_flat(request, report);
+  extend_trace(request, report);
+  if (request.check_geometry) add_geometry(flat, topology, request, report);
+  return report;
+}
 
+namespace {
+
+void trace_from_flat(const ThickReportRequest& request, ThickReport& report) {
+  const ZeroThicknessSamples& zero = request.zero;
+  const Eigen::VectorXd flat_state = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(report.edge_heights.size()));
   if (report.mobility.dof < 1) {
     report.trace_note = "DOF 0 at the flat state (a regular point when the smallest kept singular value is well above the cut): the thick sheet does not fold";
-    return report;
+    return;
   }
   if (zero.states.empty()) {
     report.trace_note = "no zero-thickness states to drive and compare with" + (zero.note.empty() ? std::string() : ": " + zero.note);
-    return report;
+    return;
   }
 
   const ClosureSystem system(report.sheet.pattern, report.sheet.topology, report.sheet.options);
   const int held = system.unknown_of_edge(zero.drive);
   if (held < 0) {
     report.trace_note = "the driving crease " + std::to_string(zero.drive) + " is not free in the thick sheet";
-    return report;
+    return;
   }
   auto unknowns = [&](const Eigen::VectorXd& fold) { return system.unknowns_from_edges(report.sheet.sheet_edge_angles(fold)); };
   auto folds = [&](const Eigen::VectorXd& x) { return report.sheet.fold_angles(system.edges_from_unknowns(x)); };
@@ -231,8 +278,52 @@ ThickReport thick_report(const CreasePattern& flat, const Topology& topology, co
     zero_previous = target;
     drive_previous = drive;
   }
-  return report;
 }
+
+void extend_trace(const ThickReportRequest& request, ThickReport& report) {
+  const ZeroThicknessSamples& zero = request.zero;
+  if (zero.further_states.empty() || report.trace.size() != zero.states.size() ||
+      !(report.max_deviation <= request.closure_tolerance))
+    return;
+  const ClosureSystem system(report.sheet.pattern, report.sheet.topology, report.sheet.options);
+  for (std::size_t k = 0; k < zero.further_states.size(); ++k) {
+    const Eigen::VectorXd& rho = zero.further_states[k];
+    const Eigen::VectorXd r = system.residual(system.unknowns_from_edges(report.sheet.sheet_edge_angles(rho)));
+    ThickTraceStep step;
+    step.drive = zero.further_drive_angles[k];
+    step.rho = rho;
+    step.residual = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
+    if (!(step.residual <= request.closure_tolerance)) break;
+    step.deviation = 0.0;
+    step.worst_edge = zero.drive;
+    step.dof = -1;
+    report.extension.push_back(step);
+  }
+}
+
+void add_geometry(const CreasePattern& flat, const Topology& topology, const ThickReportRequest& request, ThickReport& report) {
+  report.slabs = panel_slabs(flat, topology, report);
+  std::vector<double> drives{0.0};
+  std::vector<Eigen::VectorXd> states{Eigen::VectorXd::Zero(flat.num_edges())};
+  report.end.drive = 0.0;
+  report.end.rho = states[0];
+  report.end.residual = report.mobility.state_residual;
+  report.end.dof = report.mobility.dof;
+  for (const std::vector<ThickTraceStep>* part : {&report.trace, &report.extension})
+    for (const ThickTraceStep& s : *part) {
+      drives.push_back(s.drive);
+      states.push_back(s.rho);
+      report.end = s;
+    }
+  report.end_is_extension = !report.extension.empty();
+  double thinnest = request.thickness;
+  for (const PanelSlab& s : report.slabs) thinnest = std::min(thinnest, s.top - s.bottom);
+  const double margin = request.interference_margin > 0 ? request.interference_margin : 1e-4 * thinnest;
+  report.interference = slab_interference(flat, topology, report.sheet, report.slabs, drives, states, margin);
+  report.stacking = stacking_order(flat, topology, report.sheet, report.slabs, report.end.rho);
+}
+
+}  // namespace
 
 ThickTraceStep thick_state_at(const ThickReport& report, double drive, double closure_tolerance) {
   if (report.trace.empty()) throw InputError("at", "there is no traced thick motion to place (" + report.trace_note + ")");

@@ -39,7 +39,9 @@
 //     steps where Newton fails). Each step kept has closure residual <= closure_tolerance
 //     (1e-10), re-evaluated after Newton; the first step that cannot be reached ends the
 //     trace (trace_note says where and why). Per step the largest |rho_thick - rho_zero|
-//     (radians, over every flat edge) and the first-order DOF there.
+//     (radians, over every flat edge) and the first-order DOF there;
+//   - past the trace, the extension (see ThickReport); the slabs, their interference along
+//     flat + trace + extension, the stacking order at the end of that path.
 //
 // Units: lengths in pattern units, angles in radians.
 // Throws InputError: place "pattern" (a vertex off z = 0: not a flat pattern), "thickness"
@@ -53,6 +55,9 @@
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/thick/hinge_heights.hpp"
+#include "kernel/thick/panel_slab.hpp"
+#include "kernel/thick/slab_interference.hpp"
+#include "kernel/thick/stacking_order.hpp"
 #include "kernel/thick/thick_mobility.hpp"
 
 namespace rigidfold {
@@ -66,11 +71,16 @@ struct ZeroThicknessSamples {
   std::vector<Eigen::VectorXd> states; // per flat edge, radians; states[k][drive] == drive_angles[k]
   double max_residual = 0.0;           // largest closure residual of the kept states (radians)
   std::string note;                    // why there are none (empty when there are)
+  // The same branch past max_drive, to the end of the zero-thickness path (+-pi where it folds
+  // flat), same spacing and checks: thick_report tests them on the thick sheet as they are.
+  std::vector<double> further_drive_angles;
+  std::vector<Eigen::VectorXd> further_states;
 };
 
 // The first branch of trace_motion (default drive and direction - its letter's way; the
 // model check picks), `steps` equal steps up to 170 deg, kept while |drive| <= max_drive
-// (radians). reverse: the same drive traced the other way from flat (to -170 deg of the
+// (radians). further_*: the same drive traced again to +-180 deg at the same spacing, its
+// states past the last sample, kept only when that trace passes through every sample. reverse: the same drive traced the other way from flat (to -170 deg of the
 // letter's way: every crease against its letter on a multiplier family), for designs that
 // exist only that way (the Type 3 square twist's Bennett heights). Only states whose
 // closure residual is <= 1e-10 are kept.
@@ -82,6 +92,8 @@ struct ThickReportRequest {
   ThickHinges hinges = ThickHinges::kBennett;
   ZeroThicknessSamples zero;           // may be empty
   double closure_tolerance = 1e-10;    // every reported state closes to this (radians)
+  bool check_geometry = true;          // slab interference along the path and stacking at its end
+  double interference_margin = 0.0;    // pattern units; 0: 1e-4 x the thinnest slab (slab_interference.hpp)
 };
 
 struct ThickTraceStep {
@@ -104,6 +116,23 @@ struct ThickReport {
   double max_deviation = 0.0;          // over trace (radians)
   double max_trace_residual = 0.0;     // over trace (radians)
   std::string trace_note;              // why there is no trace or where it ends early
+
+  // Past the trace (only when it reached every sample on the zero-thickness motion,
+  // max_deviation <= closure_tolerance): the zero-thickness states past max_drive at which the
+  // thick sheet closes as it is (residual <= closure_tolerance, checked here), in order, up to
+  // the first that does not - the thick motion continued where it is the zero-thickness one.
+  // deviation 0 by construction; dof -1 (not evaluated).
+  std::vector<ThickTraceStep> extension;
+
+  // Geometry (request.check_geometry):
+  std::vector<PanelSlab> slabs;        // per flat face (thick_slabs.hpp's panel_slabs)
+  // Slab interference at the flat state (drive 0), every trace step and every extension
+  // state, in that order (slab_interference.hpp).
+  SlabInterference interference;
+  // The end of the path: the last extension state, else the last trace step, else flat.
+  ThickTraceStep end;
+  bool end_is_extension = false;
+  StackingOrder stacking;              // at `end` (stacking_order.hpp)
 };
 
 // The sheet is built from the pattern's xy (hinge heights become z), so a folded form would be

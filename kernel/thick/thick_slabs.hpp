@@ -22,13 +22,10 @@
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/thick/panel_slab.hpp"
 #include "kernel/thick/thick_report.hpp"
 
 namespace rigidfold {
-
-struct PanelSlab {
-  double bottom = 0.0, top = 0.0;  // pattern units, top > bottom
-};
 
 // One slab per flat face (see above).
 std::vector<PanelSlab> panel_slabs(const CreasePattern& flat, const Topology& topology, const ThickReport& report);
