@@ -117,12 +117,24 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
     Eigen::VectorXd c = k == 1 ? Eigen::VectorXd::Ones(1) : gen.unit(k);
     bool ok = false;
     Eigen::MatrixXd Hc(k, p);  // column j: H_j c, for both q_j = c . H_j c and the Jacobian row 2 (H_j c)^T
+    std::vector<double> history;  // |q|_inf per iteration
     for (int it = 0; it < 60; ++it) {
       for (int j = 0; j < p; ++j) Hc.col(j).noalias() = H[j] * c;
       const Eigen::VectorXd q = Hc.transpose() * c;
-      if (q.lpNorm<Eigen::Infinity>() <= 1e-3 * accept) {
+      history.push_back(q.lpNorm<Eigen::Infinity>());
+      if (history.back() <= 1e-3 * accept) {
         ok = true;
         break;
+      }
+      // A plateau: the least |q| of the last kStallWindow iterations is not 10% below the least
+      // before them. A start that converges, even linearly at a singular solution (ratio 1/2
+      // per step), falls far more; the first steps may oscillate, hence the long window. On the
+      // hypar (kernel 93, 93 quadratics) 195 of 240 starts sat on plateaus for 45 of their 60
+      // steps.
+      constexpr int kStallWindow = 10;
+      if (it >= kStallWindow) {
+        const auto split = history.end() - kStallWindow;
+        if (*std::min_element(split, history.end()) > 0.9 * *std::min_element(history.begin(), split)) break;
       }
       // Minimum-norm Gauss-Newton step on [q(c); |c|^2 - 1] = 0.
       Eigen::MatrixXd A(p + 1, k);
