@@ -28,5 +28,6 @@ void add_waterbomb_command(CLI::App& app);  // rigidfold waterbomb --n N --theta
 void add_thick_command(CLI::App& app);  // rigidfold thick PATTERN --thickness T [--hinges top|bottom|mid|valley|bennett] [--json] [--out THICK.fold] [--stl F.stl --at DEG]
 void add_sorce_command(CLI::App& app);  // rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--optimize] [--json] [--out DIR]
 void add_network_command(CLI::App& app);  // rigidfold network NETWORK.json [--json] [--trace N]
+void add_metamaterial_command(CLI::App& app);  // rigidfold metamaterial --unit square-twist|element1|element2|element3 [...] [--json] [--plot DIR]
 
 }  // namespace rigidfold::cli

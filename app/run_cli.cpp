@@ -29,6 +29,7 @@ int run_cli(int argc, const char* const* argv) {
   add_thick_command(app);
   add_sorce_command(app);
   add_network_command(app);
+  add_metamaterial_command(app);
   // No floating-point flag of any command takes NaN or +-inf (app/number_flags.hpp).
   require_finite_numbers(app);
   record_invocation(app, argc, argv);

@@ -85,6 +85,18 @@ done
   --out out/report/sorce/vertex_a >/dev/null
 ./build/app/rigidfold sorce data/bundled/miura_4x4_alpha60.fold --thickness 0.05 --drive 4 --to=-180 --at 0.5 \
   --out out/report/sorce/miura_4x4 >/dev/null
+# Spherical-linkage networks given by twists (seed 003 ch. 2): each bundled network's closed
+# configuration, DOF and verdict, and (the mobile ones) its input-output table traced in 12 steps;
+# eq 2-34 with one vertex perturbed does not close (its least residual, as evidence).
+mkdir -p out/report/network
+for f in data/network/*.json; do
+  name="$(basename "$f")"
+  if [ "$name" = eq2-34_perturbed.json ]; then
+    ./build/app/rigidfold network "$f" --json > "out/report/network/$name"
+  else
+    ./build/app/rigidfold network "$f" --json --trace 12 > "out/report/network/$name"
+  fi
+done
 # The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
 # playable from out/report/viewer/index.html, and a screenshot of it (type2m.png).
 bash viewer/main_job.sh out/report

@@ -1,0 +1,210 @@
+// rigidfold metamaterial --unit square-twist|element1|element2|element3 [unit parameters]
+//                        [--samples N] [--json] [--plot DIR]
+// Seed 003's metamaterial units along their motion from flat to the fold limit
+// (design/metamaterial/metamaterial_table.hpp): dimensions, Poisson's ratios, the height
+// maximum and the ratios' sign changes; every sampled row checked before anything is printed.
+// --plot DIR writes metamaterial.csv, dimensions.svg and poisson.svg through one OutputSet.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/provenance.hpp"
+#include "app/summary_stream.hpp"
+#include "design/metamaterial/metamaterial_table.hpp"
+#include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/output_set.hpp"
+
+namespace rigidfold::cli {
+
+void add_metamaterial_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "metamaterial",
+      "Metamaterial units of seed 003: dimensions and Poisson's ratios from flat to the fold limit, height maximum, sign changes");
+  struct Args {
+    std::string unit;
+    double alpha_deg = 0, beta_deg = 70, a = 1, b = 1, c = 1, l = 1;
+    int samples = 181;
+    bool json = false;
+    std::string plot;
+  };
+  auto s = std::make_shared<Args>();
+  cmd->add_option("--unit", s->unit,
+                  "square-twist (seed 003 3.3.2, T1 tessellation) or element1|element2|element3 (the double-corrugated "
+                  "P/Q tessellations' basic elements, 3.2.3, Fig 3-11)")
+      ->required();
+  auto* alpha = cmd->add_option("--alpha-deg", s->alpha_deg,
+                                "sector alpha, degrees: square twist in (90, 180) (default 150, the seed's 5 pi/6); "
+                                "elements in (0, 180) (default 60)");
+  auto* beta = cmd->add_option("--beta-deg", s->beta_deg, "elements: sector beta, degrees in (0, 180) (default 70)");
+  auto* oa = cmd->add_option("--a", s->a, "square twist: side of the central square (> 0, default 1)");
+  auto* ob = cmd->add_option("--b", s->b, "square twist: S offset, flat S = 2b + a (cos alpha + sin alpha) (default 1)");
+  auto* oc = cmd->add_option("--c", s->c, "square twist: L offset, flat L = 2c + a (cos alpha + sin alpha) (default 1)");
+  auto* ol = cmd->add_option("--l", s->l, "elements: crease length l (> 0, default 1)");
+  cmd->add_option("--samples", s->samples, "fold angles k 180/(N+1) deg, k = 1..N, N in [3, 100000] (default 181)");
+  cmd->add_flag("--json", s->json, "print one JSON object (numbers round-trip exactly)");
+  cmd->add_option("--plot", s->plot, "directory to write metamaterial.csv, dimensions.svg and poisson.svg");
+  cmd->callback([s, alpha, beta, oa, ob, oc, ol] {
+    using metamaterial::MetamaterialUnit;
+    metamaterial::MetamaterialParams p;
+    if (s->unit == "square-twist") p.unit = MetamaterialUnit::kSquareTwist;
+    else if (s->unit == "element1") p.unit = MetamaterialUnit::kElement1;
+    else if (s->unit == "element2") p.unit = MetamaterialUnit::kElement2;
+    else if (s->unit == "element3") p.unit = MetamaterialUnit::kElement3;
+    else if (s->unit == "P" || s->unit == "Q")
+      throw InputError("--unit", s->unit + ": the seed gives dimension closed forms for the elements of the P/Q "
+                                          "tessellations, not for a unit alone: use element1, element2 or element3");
+    else throw InputError("--unit", "'" + s->unit + "' is not square-twist, element1, element2 or element3");
+    const bool twist = p.unit == MetamaterialUnit::kSquareTwist;
+    auto finite = [](const char* flag, double v) {
+      if (!std::isfinite(v)) throw InputError(flag, "must be a finite number");
+    };
+    if (twist) {
+      for (auto* o : {beta, ol})
+        if (o->count() > 0) throw InputError(o->get_name(), "applies to the elements, not to --unit square-twist");
+      const double alpha_deg = alpha->count() > 0 ? s->alpha_deg : 150.0;
+      finite("--alpha-deg", alpha_deg);
+      if (!(alpha_deg > 90 && alpha_deg < 180))
+        throw InputError("--alpha-deg", std::to_string(alpha_deg) + " is outside (90, 180) degrees");
+      finite("--a", s->a);
+      finite("--b", s->b);
+      finite("--c", s->c);
+      if (!(s->a > 0)) throw InputError("--a", "must be > 0");
+      p.square_twist.alpha = to_radians(alpha_deg);
+      p.square_twist.a = s->a;
+      p.square_twist.b = s->b;
+      p.square_twist.c = s->c;
+      // Lengths over the whole motion (theta, phi -> pi): 2c, 2b > a (sin alpha - cos alpha).
+      const double need = s->a * (std::sin(p.square_twist.alpha) - std::cos(p.square_twist.alpha));
+      if (!(2 * s->b > need)) throw InputError("--b", "must exceed a (sin alpha - cos alpha) / 2 = " + std::to_string(need / 2) + " so that S > 0 over the motion");
+      if (!(2 * s->c > need)) throw InputError("--c", "must exceed a (sin alpha - cos alpha) / 2 = " + std::to_string(need / 2) + " so that L > 0 over the motion");
+    } else {
+      for (auto* o : {oa, ob, oc})
+        if (o->count() > 0) throw InputError(o->get_name(), "applies to --unit square-twist, not to the elements");
+      const double alpha_deg = alpha->count() > 0 ? s->alpha_deg : 60.0;
+      finite("--alpha-deg", alpha_deg);
+      finite("--beta-deg", s->beta_deg);
+      finite("--l", s->l);
+      if (!(alpha_deg > 0 && alpha_deg < 180)) throw InputError("--alpha-deg", std::to_string(alpha_deg) + " is outside (0, 180) degrees");
+      if (!(s->beta_deg > 0 && s->beta_deg < 180)) throw InputError("--beta-deg", std::to_string(s->beta_deg) + " is outside (0, 180) degrees");
+      if (!(s->l > 0)) throw InputError("--l", "must be > 0");
+      p.element.alpha = to_radians(alpha_deg);
+      p.element.beta = to_radians(s->beta_deg);
+      p.element.l = s->l;
+      if (p.unit == MetamaterialUnit::kElement3 && std::fabs(std::cos((p.element.beta + p.element.alpha) / 2)) < 1e-12)
+        throw InputError("--beta-deg", "element3 with alpha + beta = 180 degrees is locked ((3-26) pins theta at 0)");
+    }
+    if (s->samples < 3 || s->samples > 100000)
+      throw InputError("--samples", "must be between 3 and 100000, got " + std::to_string(s->samples));
+    p.samples = s->samples;
+
+    OutputSet outputs;
+    std::string csv_path, dims_path, ratios_path;
+    if (!s->plot.empty()) {
+      outputs.add_output_directory("--plot", s->plot);
+      const std::string dir = s->plot.back() == '/' ? s->plot : s->plot + "/";
+      csv_path = dir + "metamaterial.csv";
+      dims_path = dir + "dimensions.svg";
+      ratios_path = dir + "poisson.svg";
+      for (const auto* path : {&csv_path, &dims_path, &ratios_path}) outputs.add_output("--plot", *path);
+    }
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
+    // Every row below passed its checks in metamaterial_table (NoAnswerError -> exit 3).
+    const metamaterial::MetamaterialTable t = metamaterial::metamaterial_table(p);
+    if (!s->plot.empty()) {
+      outputs.stage(csv_path, metamaterial::metamaterial_csv(t));
+      outputs.stage(dims_path, metamaterial::metamaterial_dimensions_svg(t));
+      outputs.stage(ratios_path, metamaterial::metamaterial_ratios_svg(t));
+    }
+    outputs.commit();
+
+    const auto dn = metamaterial::dimension_names(p.unit);
+    const auto rn = metamaterial::ratio_names(p.unit);
+    nlohmann::ordered_json j;
+    j["unit"] = metamaterial::unit_name(p.unit);
+    if (twist) {
+      j["parameters"] = {{"alpha_deg", to_degrees(p.square_twist.alpha)}, {"a", p.square_twist.a}, {"b", p.square_twist.b}, {"c", p.square_twist.c}};
+      j["fold_angle"] = "theta_deg: fold magnitude of the S-direction pleats; second_angle_deg: phi of the L-direction pleats by (3-31)";
+    } else {
+      j["parameters"] = {{"alpha_deg", to_degrees(p.element.alpha)}, {"beta_deg", to_degrees(p.element.beta)}, {"l", p.element.l}};
+      j["fold_angle"] = p.unit == MetamaterialUnit::kElement3
+                            ? "rho_deg = 180 - phi of A2B2; second_angle_deg: dihedral theta of B4B5 by (3-26)"
+                            : "rho_deg = 180 - phi of A2B2; second_angle_deg: the dihedral phi of A2B2";
+    }
+    j["samples"] = p.samples;
+    j["dimensions"] = dn;
+    j["ratios"] = rn;
+    if (t.has_height_maximum)
+      j["height_maximum"] = {{"fold_deg", to_degrees(t.height_maximum_fold)}, {"height", t.height_maximum}};
+    else
+      j["height_maximum"] = nullptr;
+    j["height_stationary_points"] = t.height_stationary_points;
+    nlohmann::ordered_json changes = nlohmann::ordered_json::array();
+    for (const auto& c : t.sign_changes)
+      changes.push_back({{"ratio", c.ratio == "nu_in" ? rn[0] : rn[1]},
+                         {"kind", c.kind},
+                         {"fold_deg", to_degrees(c.fold)},
+                         {"negative_after", c.negative_after}});
+    j["sign_changes"] = changes;
+    j["checks"] = {{"max_constraint_residual", t.max_constraint_residual},
+                   {"max_derivative_error", t.max_derivative_error},
+                   {"constraint_tolerance", metamaterial::kConstraintTolerance},
+                   {"derivative_tolerance", metamaterial::kDerivativeTolerance}};
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const auto& r : t.rows) {
+      nlohmann::ordered_json o;
+      o["fold_deg"] = to_degrees(r.fold);
+      o["second_angle_deg"] = to_degrees(r.second_angle);
+      o[dn[0]] = r.x;
+      o[dn[1]] = r.y;
+      o[dn[2]] = r.H;
+      o["d" + dn[0] + "_per_rad"] = r.dx;
+      o["d" + dn[1] + "_per_rad"] = r.dy;
+      o["d" + dn[2] + "_per_rad"] = r.dH;
+      o[rn[0]] = r.nu_in;
+      o[rn[1]] = r.nu_out;
+      o["constraint_residual"] = r.constraint_residual;
+      o["derivative_error"] = r.derivative_error;
+      rows.push_back(o);
+    }
+    j["rows"] = rows;
+    if (s->json) {
+      std::cout << with_provenance(j).dump(2) << "\n";
+      return;
+    }
+    char line[320];
+    std::cout << "metamaterial " << j["unit"].get<std::string>() << " " << j["parameters"].dump() << ", " << p.samples
+              << " samples\n";
+    std::cout << "  fold angle: " << j["fold_angle"].get<std::string>() << "\n";
+    const auto& first = t.rows.front();
+    const auto& last = t.rows.back();
+    std::snprintf(line, sizeof line, "  %s, %s, %s: (%.9g, %.9g, %.9g) at %.6g deg -> (%.9g, %.9g, %.9g) at %.6g deg\n",
+                  dn[0].c_str(), dn[1].c_str(), dn[2].c_str(), first.x, first.y, first.H, to_degrees(first.fold), last.x,
+                  last.y, last.H, to_degrees(last.fold));
+    std::cout << line;
+    if (t.has_height_maximum) {
+      std::snprintf(line, sizeof line, "  height maximum %.12g at fold %.12g deg (%d stationary point%s of H)\n",
+                    t.height_maximum, to_degrees(t.height_maximum_fold), t.height_stationary_points,
+                    t.height_stationary_points == 1 ? "" : "s");
+      std::cout << line;
+    } else {
+      std::cout << "  no interior height maximum\n";
+    }
+    for (const auto& c : t.sign_changes) {
+      std::snprintf(line, sizeof line, "  %s changes sign at fold %.12g deg (%s), %s after\n",
+                    (c.ratio == "nu_in" ? rn[0] : rn[1]).c_str(), to_degrees(c.fold), c.kind.c_str(),
+                    c.negative_after ? "negative" : "positive");
+      std::cout << line;
+    }
+    std::snprintf(line, sizeof line, "  checks: constraint residual <= %.1e, derivative vs finite difference <= %.1e (relative)\n",
+                  t.max_constraint_residual, t.max_derivative_error);
+    std::cout << line;
+    if (!s->plot.empty()) std::cout << "  wrote " << csv_path << ", " << dims_path << ", " << ratios_path << "\n";
+  });
+}
+
+}  // namespace rigidfold::cli
