@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -109,6 +110,59 @@ TEST(ThickCli, TopHingesKeepTheZeroThicknessKinematics) {
   ASSERT_FALSE(j["trace"]["steps"].empty());
   EXPECT_LE(j["trace"]["max_deviation_rad"].get<double>(), 1e-10);
   for (const auto& h : j["hinge_heights"]) EXPECT_EQ(h.get<double>(), 0.05);
+}
+
+// Slab interference along the path and stacking at its end (kernel/thick/slab_interference.hpp,
+// stacking_order.hpp): hinges on the top face make the slabs interpenetrate across a mountain
+// crease at the first folded state; the JSON carries the first pair, its state and crease,
+// and the stacking at the end of the path (180 deg).
+TEST(ThickCli, ReportsSlabInterferenceAndTheStackingAtTheEnd) {
+  const auto input = nlohmann::json::parse(std::ifstream(kMiura));
+  const auto top = run_json(kMiura + " --thickness 0.05 --hinges top");
+  const auto& in = top["slab_interference"];
+  EXPECT_FALSE(in["passed"].get<bool>());
+  EXPECT_TRUE(in["states"][0]["pairs"].empty());  // flat: slabs only touch
+  ASSERT_TRUE(in.contains("first"));
+  EXPECT_EQ(in["first"]["state"].get<int>(), 1);
+  EXPECT_EQ(in["first"]["drive_deg"].get<double>(), top["trace"]["steps"][0]["drive_deg"].get<double>());
+  ASSERT_FALSE(in["first"]["shared_crease"].is_null());
+  const int crease = in["first"]["shared_crease"].get<int>();
+  EXPECT_EQ(input["edges_assignment"][crease], "M");
+  EXPECT_LT(in["first"]["shared_crease_fold_deg"].get<double>(), 0.0);
+  EXPECT_EQ(in["states"].size(), in["states_checked"].get<std::size_t>());
+  EXPECT_GT(in["collisions"].get<long long>(), 0);
+  EXPECT_TRUE(top["stacking"]["flat_folded"].get<bool>());
+  EXPECT_GT(top["stacking"]["letter_disagreements"].get<int>(), 0);
+
+  // Bennett heights as slabs (kernel test: thick_geometry_test.cpp): the first collision is
+  // across a crease whose hinge sits on the face away from its fold (a valley's on the bottom,
+  // at height 0, or a mountain's on the top), and at 180 deg the zig-zag creases' hinges, steps
+  // between their panels, turn each panel onto its neighbour's level.
+  const auto bennett = run_json(kMiura + " --thickness 0.05 --hinges bennett");
+  const auto& bi = bennett["slab_interference"];
+  EXPECT_FALSE(bi["passed"].get<bool>());
+  EXPECT_EQ(bi["first"]["state"].get<int>(), 1);
+  ASSERT_FALSE(bi["first"]["shared_crease"].is_null());
+  double highest = 0;
+  for (const auto& h : bennett["hinge_heights"]) highest = std::max(highest, h.get<double>());
+  const int first = bi["first"]["shared_crease"].get<int>();
+  const double h = bennett["hinge_heights"][first].get<double>();
+  const std::string letter = input["edges_assignment"][first];
+  EXPECT_TRUE((letter == "V" && std::abs(h) <= 1e-9) || (letter == "M" && std::abs(h - highest) <= 1e-9)) << letter << " " << h;
+  EXPECT_FALSE(bennett["trace"]["extension"].empty());
+  EXPECT_EQ(std::abs(bennett["stacking"]["at_drive_deg"].get<double>()), 180.0);
+  EXPECT_EQ(bennett["stacking"]["end_of"], "extension");
+  EXPECT_TRUE(bennett["stacking"]["flat_folded"].get<bool>());
+  int level = 0, disagree = 0;
+  for (const auto& c : bennett["stacking"]["creases"]) {
+    level += c["b_side_of_a"] == "level" ? 1 : 0;
+    disagree += c["agrees_with_letter"].get<bool>() ? 0 : 1;
+  }
+  EXPECT_GT(level, 0);
+  EXPECT_EQ(bennett["stacking"]["letter_disagreements"].get<int>(), disagree);
+  EXPECT_LT(disagree, static_cast<int>(bennett["stacking"]["creases"].size()));
+  EXPECT_EQ(bennett["stacking"]["panels_bottom_to_top"].size(), input["faces_vertices"].size());
+  EXPECT_LT(bennett["stacking"]["min_gap"].get<double>(), 0.0);
 }
 
 // The sign of the driving crease's fold on the traced motion (its letter's direction).
