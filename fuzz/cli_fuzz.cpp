@@ -3,7 +3,7 @@
 //   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|check|thick|sorce + flags
+//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|metamaterial|check|thick|sorce + flags
 //   RIGIDFOLD_FUZZ_ENTRY 5  sorce_spec_fuzz     sorce VERTEX_A.fold --thickness 0.1 --offsets INPUT --out DIR
 //   RIGIDFOLD_FUZZ_ENTRY 6  network_json_fuzz   network INPUT --json --trace 4
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
@@ -85,6 +85,7 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     case 4: args.insert(args.end(), {"waterbomb"}); break;
     case 5: args.insert(args.end(), {"assignments", kPattern}); break;
     case 6: args.insert(args.end(), {"energy", kWaterbomb, "--rest", kWaterbombRest}); break;
+    case 7: args.insert(args.end(), {"metamaterial"}); break;
     case 8: args.insert(args.end(), {"thick", kMiura}); break;
     case 9: args.insert(args.end(), {"sorce", kVertexA}); break;
     default: args.insert(args.end(), {"check", kPattern}); break;

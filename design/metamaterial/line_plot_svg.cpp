@@ -30,9 +30,12 @@ std::string num(double v) {
   return b;
 }
 
-// About 5 round tick values covering [lo, hi].
+// About 5 round tick values covering [lo, hi] (at most 12; none when the range is below the
+// values' resolution).
 std::vector<double> ticks(double lo, double hi) {
+  std::vector<double> t;
   const double raw = (hi - lo) / 5;
+  if (!(raw > 0) || !std::isfinite(raw)) return t;
   const double mag = std::pow(10.0, std::floor(std::log10(raw)));
   double step = mag;
   for (double m : {1.0, 2.0, 5.0, 10.0})
@@ -40,8 +43,13 @@ std::vector<double> ticks(double lo, double hi) {
       step = m * mag;
       break;
     }
-  std::vector<double> t;
-  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) t.push_back(std::fabs(v) < 1e-12 * step ? 0.0 : v);
+  const double first = std::ceil(lo / step);
+  for (int i = 0; i < 12; ++i) {
+    const double v = (first + i) * step;
+    if (v > hi + 1e-9 * step) break;
+    if (!t.empty() && v == t.back()) break;
+    t.push_back(std::fabs(v) < 1e-12 * step ? 0.0 : v);
+  }
   return t;
 }
 

@@ -133,7 +133,23 @@ std::vector<std::string> ratio_names(MetamaterialUnit unit) {
   return {"nu_in", "nu_out"};
 }
 
-MetamaterialTable metamaterial_table(const MetamaterialParams& params) {
+MetamaterialTable metamaterial_table(const MetamaterialParams& given) {
+  // Computed and checked at unit length (a = 1 or l = 1: the closed forms are homogeneous of
+  // degree 1 in the lengths), scaled back at the end, so that tiny or huge units get the
+  // checks they get at size 1.
+  MetamaterialParams params = given;
+  double length = 1.0;
+  if (given.unit == MetamaterialUnit::kSquareTwist) {
+    length = given.square_twist.a;
+    if (!(length > 0) || !std::isfinite(length)) throw std::invalid_argument("metamaterial: a must be > 0");
+    params.square_twist.a = 1.0;
+    params.square_twist.b = given.square_twist.b / length;
+    params.square_twist.c = given.square_twist.c / length;
+  } else {
+    length = given.element.l;
+    if (!(length > 0) || !std::isfinite(length)) throw std::invalid_argument("metamaterial: l must be > 0");
+    params.element.l = 1.0;
+  }
   if (params.samples < 3 || params.samples > 100000)
     throw std::invalid_argument("metamaterial: samples must be between 3 and 100000");
   if (params.unit == MetamaterialUnit::kElement3 &&
@@ -234,6 +250,12 @@ MetamaterialTable metamaterial_table(const MetamaterialParams& params) {
       }
       t.sign_changes.push_back(c);
     }
+  }
+  t.params = given;
+  t.height_maximum *= length;
+  for (auto& r : t.rows) {
+    r.x *= length, r.y *= length, r.H *= length;
+    r.dx *= length, r.dy *= length, r.dH *= length;
   }
   std::sort(t.sign_changes.begin(), t.sign_changes.end(),
             [](const MetamaterialSignChange& a, const MetamaterialSignChange& b) { return a.fold < b.fold; });

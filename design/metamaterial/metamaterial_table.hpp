@@ -36,7 +36,9 @@
 // twist, square_twist_height_maximum's theta must be one of the table's stationary points to
 // 1e-9 rad and its height the table's to 1e-12 relative (else NoAnswerError: sample more
 // finely). None when H has no interior stationary maximum.
-// Angles in radians, lengths in the unit of a (square twist) or l (elements).
+// Computed and checked at a = 1 (l = 1) and scaled back: the closed forms are homogeneous of
+// degree 1 in the lengths. Angles in radians, lengths in the unit of a (square twist) or l
+// (elements).
 #include <string>
 #include <vector>
 

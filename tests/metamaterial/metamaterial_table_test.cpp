@@ -122,6 +122,31 @@ TEST(MetamaterialTable, ElementsNuOutSignChangeIsTheHeightMaximum) {
   }
 }
 
+// Scale-free: a unit of size 1e-300 or 1e300 gets the table it gets at size 1, scaled (the
+// ratios, folds and sign changes identical).
+TEST(MetamaterialTable, TinyAndHugeUnitsScale) {
+  for (double scale : {1e-300, 1e300}) {
+    MetamaterialParams p = twist(150.0), q = p;
+    q.square_twist.a = q.square_twist.b = q.square_twist.c = scale;
+    MetamaterialParams e, f;
+    e.unit = f.unit = MetamaterialUnit::kElement3;
+    f.element.l = scale;
+    for (auto [u, v] : {std::pair{p, q}, std::pair{e, f}}) {
+      const MetamaterialTable a = metamaterial_table(u), b = metamaterial_table(v);
+      ASSERT_EQ(a.rows.size(), b.rows.size());
+      for (std::size_t k = 0; k < a.rows.size(); ++k) {
+        EXPECT_EQ(a.rows[k].nu_in, b.rows[k].nu_in);
+        EXPECT_EQ(a.rows[k].nu_out, b.rows[k].nu_out);
+        EXPECT_NEAR(b.rows[k].H / scale, a.rows[k].H, 1e-15 * a.rows[k].H);
+        EXPECT_NEAR(b.rows[k].dx / scale, a.rows[k].dx, 1e-15 * std::fabs(a.rows[k].dx));
+      }
+      EXPECT_EQ(a.height_maximum_fold, b.height_maximum_fold);
+      EXPECT_NEAR(b.height_maximum / scale, a.height_maximum, 1e-15 * a.height_maximum);
+      ASSERT_EQ(a.sign_changes.size(), b.sign_changes.size());
+    }
+  }
+}
+
 TEST(MetamaterialTable, RefusesBadParameters) {
   MetamaterialParams p = twist(150.0, 2);
   EXPECT_THROW(metamaterial_table(p), std::invalid_argument);
