@@ -1,4 +1,5 @@
-// rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--circular EDGE,...] [--optimize [--epsilon E]
+// rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--circular EDGE,...] [--split EDGE:SPEC ...]
+//                 [--optimize [--epsilon E]
 //                 [--max-protrusion P] [--max-s0 S]] [--drive E] [--to DEG] [--steps N]
 //                 [--at T] [--samples N] [--general] [--json] [--out DIR]
 // SORCE rolling-contact joints (seed 002) for every folding crease of a pattern, on the path
@@ -11,7 +12,8 @@
 //   profiles.svg    every folding crease's profile pair side by side ("E<edge>")
 //   profiles.dxf    the same as DXF polylines, true coordinates, layers E<edge>_LEFT/_RIGHT/_SLAB
 //   panel_F.stl     panel F (face index) as slab + cams (design/sorce/sorce_solids.hpp) in its
-//                   flat pose, one closed file per panel for printing (none, with the reason in
+//                   flat pose, its slab cut clear of each mate cam's sweep (clearance cuts,
+//                   sorce_pattern_solids.hpp), one closed file per panel for printing (none, with the reason in
 //                   the JSON, when a panel cannot be built: not convex, a cam section that
 //                   crosses itself)
 //   panels_at.stl   every panel placed at t = --at, for viewing (only with --at; mating cams
@@ -31,12 +33,15 @@
 #include "app/number_flags.hpp"
 #include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
+#include "design/sorce/sorce_cam_interference.hpp"
 #include "design/sorce/sorce_checks.hpp"
 #include "design/sorce/sorce_design.hpp"
 #include "design/sorce/sorce_dxf.hpp"
 #include "design/sorce/sorce_frames.hpp"
 #include "design/sorce/sorce_offsets_spec.hpp"
+#include "design/sorce/sorce_pattern_solids.hpp"
 #include "design/sorce/sorce_solids.hpp"
+#include "design/sorce/sorce_split_spec.hpp"
 #include "design/sorce/sorce_svg.hpp"
 #include "kernel/geometry/folded_output.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -117,38 +122,18 @@ Json checks_json(const PatternChecks& k) {
   return c;
 }
 
-// Every panel as slab + cams, in its t = 0 pose (flat coordinates). Throws InputError from
-// panel_solid (a non-convex panel, a self-crossing cam section).
-std::vector<PanelSolid> panel_solids(const CreasePattern& p, const PatternSorce& s, int samples) {
-  std::vector<PanelSolidInput> in(p.num_faces());
-  for (int f = 0; f < p.num_faces(); ++f) {
-    for (int v : p.faces[f]) in[f].polygon.push_back(p.vertices[v]);
-    in[f].thickness = s.faces[f].thickness;
-  }
-  for (const CreaseJoint& j : s.creases) {
-    if (!j.folds) continue;
-    const SampledProfiles prof = sample_profiles(j.motion, samples);
-    const Eigen::Vector3d a = p.vertices[p.edges[j.edge][0]], b = p.vertices[p.edges[j.edge][1]];
-    for (bool left : {true, false}) {
-      CamSide c;
-      c.origin = a;
-      c.fold_direction = (b - a).normalized();
-      c.x_axis = j.frame.linear().col(0);
-      c.w0 = 0.0;
-      c.w1 = (b - a).norm();
-      c.left = left;
-      c.profile = left ? prof.left : prof.right;
-      in[left ? j.left_face : j.right_face].cams.push_back(c);
-    }
-  }
-  std::vector<PanelSolid> out;
-  for (int f = 0; f < p.num_faces(); ++f) {
-    try {
-      out.push_back(panel_solid(in[f]));
-    } catch (const InputError& e) {
-      throw InputError("faces[" + std::to_string(f) + "]: " + e.place(), e.message());
-    }
-  }
+Json cam_interference_json(const CamInterference& c) {
+  Json out;
+  out["checked"] = true;
+  out["samples"] = c.times.size();
+  out["passed"] = c.collisions.empty();
+  out["pairs_tested"] = c.pairs_tested;
+  out["rolling_partner_pairs_skipped"] = c.partner_pairs_skipped;
+  Json hits = Json::array();
+  for (const CamCollision& h : c.collisions)
+    hits.push_back({{"t", h.t}, {"faces", {h.face_a, h.face_b}}, {"cam_edges", {h.edge_a, h.edge_b}}});
+  out["collisions"] = hits;  // edge -1: that shell is the panel's slab
+  if (!c.collisions.empty()) out["first"] = hits[0];
   return out;
 }
 
@@ -170,6 +155,7 @@ void add_sorce_command(CLI::App& app) {
     double thickness = 0, epsilon = 0, max_protrusion = -1, max_s0 = -1, to = 0, at = -1;
     int drive = -1, steps = 40, samples = 201;
     std::vector<int> circular;
+    std::vector<std::string> split;
     bool optimize = false, json = false, general = false;
   };
   auto a = std::make_shared<Args>();
@@ -184,6 +170,10 @@ void add_sorce_command(CLI::App& app) {
                   "creases (edge indices, comma-separated) made circular CORE joints: both faces z = -(T/2) tan(gamma/4), "
                   "profiles on arcs of radius T/2")
       ->delimiter(',');
+  cmd->add_option("--split", a->split,
+                  "EDGE:SPEC, repeatable: split crease EDGE, its right panel shifted by d(t) along the fold's half-angle "
+                  "direction (seed eqs 58, 59); SPEC linear:D (d = D t) or quadratic:D (d = D t^2), D in length units; "
+                  "split both collinear creases of a vertex with one SPEC for the seed's collinear split");
   cmd->add_flag("--optimize", a->optimize, "search the faces' offset coefficients for the figure of merit (NLopt COBYLA)");
   cmd->add_option("--epsilon", a->epsilon, "with --optimize: smallest convexity allowed (1/length, >= 0)")->check(finite_in(0, 1e300));
   cmd->add_option("--max-protrusion", a->max_protrusion, "with --optimize: bound on every cam's protrusion (length, >= 0)")
@@ -233,6 +223,13 @@ void add_sorce_command(CLI::App& app) {
       rq.sorce.offset_coefficients = spec.coefficients;
     }
     rq.sorce.circular_edges = a->circular;
+    for (const std::string& text : a->split) {
+      try {
+        rq.sorce.splits.push_back(parse_split_spec(text));
+      } catch (const InputError& e) {
+        throw InputError("--split " + text, e.message());
+      }
+    }
     if (a->drive >= 0) rq.sorce.trace.drive = a->drive;
     if (to->count() > 0) {
       if (a->to == 0) throw InputError("--to", "must not be 0");
@@ -260,6 +257,10 @@ void add_sorce_command(CLI::App& app) {
       if (place == "drive") throw InputError("--drive", e.message());
       if (place == "to") throw InputError("--to", e.message());
       if (place.rfind("circular_edges", 0) == 0) throw InputError("--circular " + place.substr(14), e.message());
+      if (place.rfind("splits[", 0) == 0) {  // the k-th --split as the user wrote it
+        const std::size_t k = std::stoul(place.substr(7));
+        if (k < a->split.size()) throw InputError("--split " + a->split[k], e.message());
+      }
       if (place == "pattern" || place == "branch") throw InputError(a->pattern, e.message());
       if (place.rfind("end_offsets", 0) == 0 || place.rfind("offset_coefficients", 0) == 0)
         throw InputError((spec_given ? a->offsets : a->pattern) + ": " + place, e.message());
@@ -293,6 +294,30 @@ void add_sorce_command(CLI::App& app) {
     j["creases"] = creases;
     j["figure_of_merit"] = finite_or_null(figure_of_merit(reports, rq.epsilon));
     j["checks"] = checks_json(s.checks);
+    // Cams against every other panel's slab and cams over 21 samples of t (FCL); the rolling
+    // partners' cams are not a pair (their contact is the joint). First the solids as designed
+    // (no clearance), then as printed: each slab cut clear of its mate cam's sweep, the STL files.
+    std::vector<PanelSolid> solids;
+    std::string solids_note;
+    try {
+      const PatternSolids plain = pattern_solids(p, s, a->samples);
+      j["checks"]["cam_interference"] = cam_interference_json(cam_interference(p, s, plain, 21));
+      ClearanceOptions cut;
+      cut.cut = !a->out.empty();  // the cuts are for the STL files only (their sweeps cost seconds on a Miura)
+      const PatternSolids built = cut.cut ? pattern_solids(p, s, a->samples, SolidOptions{}, cut) : plain;
+      Json cuts = Json::array();
+      for (const ClearanceCut& c : built.clearances)
+        cuts.push_back({{"face", c.face}, {"edge", c.edge}, {"cut", c.cut}, {"margin", c.margin}, {"sweep_step", c.sweep_step},
+                        {"region_area", c.region_area}});
+      j["clearance_cuts"] = cuts;
+      if (cut.cut) j["checks"]["cam_interference_printed"] = cam_interference_json(cam_interference(p, s, built, 21));
+      solids = built.panels;
+    } catch (const InputError& e) {
+      solids.clear();
+      solids_note = std::string("no STL: ") + e.what();
+      j["checks"]["cam_interference"] = {{"checked", false}, {"reason", solids_note}};
+      if (!a->out.empty()) j["checks"]["cam_interference_printed"] = j["checks"]["cam_interference"];
+    }
     Json bounds = Json::object();
     for (const auto& [name, bound] : verdict.bounds) bounds[name] = bound;
     j["check_bounds"] = bounds;
@@ -337,12 +362,7 @@ void add_sorce_command(CLI::App& app) {
       outputs.stage(out_file("frames.fold"), write_fold_string(exploded_frames(p, frames)));
       outputs.stage(out_file("poses.csv"), pose_table_csv(p, frames));
       Json files = Json::object();
-      std::vector<PanelSolid> solids;
-      try {
-        solids = panel_solids(p, s, a->samples);
-      } catch (const InputError& e) {
-        j["stl_note"] = std::string("no STL: ") + e.what();
-      }
+      if (solids.empty()) j["stl_note"] = solids_note;
       if (!solids.empty()) {
         Json panels = Json::array();
         for (int f = 0; f < p.num_faces(); ++f) {

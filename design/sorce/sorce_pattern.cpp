@@ -52,9 +52,60 @@ Matrix4d rotation_z_derivative(double a) {
   return m;
 }
 
-// The crease's planar relative motion in its frame: right panel in the left panel's coordinates.
+// The split offset's value (k = 0) or derivative (k = 1) as a translation column; 0 if not split.
+Matrix4d split_part(const FoldMotion& m, double t, int k) {
+  Matrix4d out = Matrix4d::Zero();
+  if (k == 0) out.setIdentity();
+  if (!m.d) return out;
+  const VectorJet d = m.d(t);
+  out(0, 3) = d[0][k];
+  out(1, 3) = d[1][k];
+  return out;
+}
+
+// The crease's planar relative motion in its frame: right panel in the left panel's coordinates
+// (eq 55: q = R(gamma) (p + (0, z_r)) + d - (0, z_l)).
 Matrix4d planar_relative(const FoldMotion& m, double t) {
-  return translation_y(-m.z_left(t)[0]) * rotation_z(m.gamma(t)[0]) * translation_y(m.z_right(t)[0]);
+  return translation_y(-m.z_left(t)[0]) * split_part(m, t, 0) * rotation_z(m.gamma(t)[0]) * translation_y(m.z_right(t)[0]);
+}
+
+Isometry3d offset_pose(const Isometry3d& placement, const Vector3d& normal, double z) {
+  Isometry3d p = placement;
+  p.translate(z * normal);
+  return p;
+}
+
+// Face poses at t: face f's zero-thickness placement offset by z_f along its normal; with split
+// creases, face 0's pose carried across a spanning tree of the joints instead (the split
+// translations are not in the zero-thickness placement).
+std::vector<Isometry3d> poses_of(const CreasePattern& pattern, const Topology& topology, const PathSpline& path,
+                                 const std::vector<CreaseJoint>& creases, const std::vector<FaceOffset>& faces, double t,
+                                 bool split) {
+  const int ne = pattern.num_edges(), nf = pattern.num_faces();
+  Eigen::VectorXd rho(ne);
+  for (int e = 0; e < ne; ++e) rho(e) = path.rho[e](t)[0];
+  const FoldedGeometry g = place_faces(pattern, topology, rho, Eigen::VectorXd::Zero(ne));
+  std::vector<Isometry3d> p(nf);
+  for (int f = 0; f < nf; ++f) p[f] = offset_pose(g.face_motions[f], topology.face_normals[f], faces[f].z(t)[0]);
+  if (!split) return p;
+  std::vector<char> placed(nf, 0);
+  std::vector<int> queue{0};
+  placed[0] = 1;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const int f = queue[k];
+    for (const CreaseJoint& j : creases) {
+      if (j.left_face != f && j.right_face != f) continue;
+      const int other = j.left_face == f ? j.right_face : j.left_face;
+      if (placed[other]) continue;
+      const Matrix4d frame = j.frame.matrix();
+      Matrix4d rel = frame * planar_relative(j.motion, t) * frame.inverse();  // right in left
+      if (f == j.right_face) rel = Matrix4d(rel.inverse());
+      p[other] = Isometry3d(p[f].matrix() * rel);
+      placed[other] = 1;
+      queue.push_back(other);
+    }
+  }
+  return p;
 }
 
 // Largest entry of |a - b|, translation column divided by `size`.
@@ -64,11 +115,6 @@ double relative_difference(const Matrix4d& a, const Matrix4d& b, double size) {
   return d.maxCoeff();
 }
 
-Isometry3d offset_pose(const Isometry3d& placement, const Vector3d& normal, double z) {
-  Isometry3d p = placement;
-  p.translate(z * normal);
-  return p;
-}
 
 // Convex polygon inset: edge i (vertex i -> i + 1) moved inward by inset[i]. Empty if the face is
 // not convex (counter-clockwise about +z) or the inset polygon degenerates.
@@ -289,6 +335,20 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
     }
   }
 
+  // Split creases.
+  std::vector<ScalarFunction> split_of_edge(ne);
+  for (std::size_t k = 0; k < request.splits.size(); ++k) {
+    const int e = request.splits[k].edge;
+    const std::string place = at("splits", static_cast<int>(k));
+    if (e < 0 || e >= ne || !topology.edge_is_hinge[e]) throw InputError(place, "is not a hinge crease of the pattern");
+    if (split_of_edge[e]) throw InputError(place, "crease " + std::to_string(e) + " is split twice");
+    if (!request.splits[k].d) throw InputError(place, "no offset function d(t)");
+    const double d0 = request.splits[k].d(0.0)[0];
+    if (!(std::abs(d0) <= 1e-12)) throw InputError(place, "d(0) must be 0 (the panels are coplanar when flat)");
+    split_of_edge[e] = request.splits[k].d;
+  }
+  const bool split = !request.splits.empty();
+
   // Size for relative figures.
   Vector3d lo = pattern.vertices[0], hi = pattern.vertices[0];
   for (const auto& v : pattern.vertices) {
@@ -317,6 +377,7 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
     j.motion.z_right = out.faces[j.right_face].z;
     j.motion.thickness_left = thickness[j.left_face];
     j.motion.thickness_right = thickness[j.right_face];
+    if (split_of_edge[e]) j.motion.d = split_offset_along_half_angle(split_of_edge[e], path.rho[e]);  // eqs 58, 59
     j.folds = sign[e] != 0 || path.samples.row(e).cwiseAbs().maxCoeff() > 1e-9;
     if (j.folds) {
       j.report = fold_report(j.motion, report);
@@ -367,18 +428,12 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
                                                                   0.5 * (thickness[j.left_face] + thickness[j.right_face]));
   }
 
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(ne);
   auto angles_at = [&](double t) {
     Eigen::VectorXd rho(ne);
     for (int e = 0; e < ne; ++e) rho(e) = path.rho[e](t)[0];
     return rho;
   };
-  auto poses_at = [&](double t, const Eigen::VectorXd& rho) {
-    const FoldedGeometry g = place_faces(pattern, topology, rho, zero);
-    std::vector<Isometry3d> p(nf);
-    for (int f = 0; f < nf; ++f) p[f] = offset_pose(g.face_motions[f], topology.face_normals[f], out.faces[f].z(t)[0]);
-    return p;
-  };
+  auto poses_at = [&](double t, const Eigen::VectorXd&) { return poses_of(pattern, topology, path, out.creases, out.faces, t, split); };
   // Relative transform of face `to` in face `from`'s coordinates across crease joint j.
   auto crossing = [&](const CreaseJoint& j, int from, double t) -> Matrix4d {
     const Matrix4d f = j.frame.matrix();
@@ -435,12 +490,14 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
       const Jet g = j.motion.gamma(t), zl = j.motion.z_left(t), zr = j.motion.z_right(t);
       if (g[1] == 0.0) continue;
       const Matrix4d a = translation_y(-zl[0]), b = rotation_z(g[0]), c = translation_y(zr[0]);
+      const Matrix4d s = split_part(j.motion, t, 0), ds = split_part(j.motion, t, 1);
       Matrix4d da = Matrix4d::Zero(), dc = Matrix4d::Zero();
       da(1, 3) = -zl[1];
       dc(1, 3) = zr[1];
       const Matrix4d f = j.frame.matrix(), finv = f.inverse();
-      const Matrix4d rel = f * a * b * c * finv;
-      const Matrix4d drel = f * (da * b * c + a * (g[1] * rotation_z_derivative(g[0])) * c + a * b * dc) * finv;
+      const Matrix4d rel = f * a * s * b * c * finv;
+      const Matrix4d drel =
+          f * (da * s * b * c + a * ds * b * c + a * s * (g[1] * rotation_z_derivative(g[0])) * c + a * s * b * dc) * finv;
       const Matrix4d twist = rel.inverse() * drel;  // body twist in the left face's reference coordinates
       const Vector3d omega(twist(2, 1), twist(0, 2), twist(1, 0)), v = twist.block<3, 1>(0, 3);
       j.pitch = std::max(j.pitch, std::abs(omega.dot(v)) / omega.squaredNorm() / size);
@@ -511,6 +568,13 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
     }
   }
   return out;
+}
+
+std::vector<Isometry3d> panel_poses(const CreasePattern& pattern, const Topology& topology, const PatternSorce& sorce,
+                                    double t) {
+  bool split = false;
+  for (const CreaseJoint& j : sorce.creases) split = split || static_cast<bool>(j.motion.d);
+  return poses_of(pattern, topology, sorce.path, sorce.creases, sorce.faces, t, split);
 }
 
 }  // namespace rigidfold::sorce

@@ -59,6 +59,19 @@ struct PatternSorceRequest {
   // profiles are arcs of radius h/2. A face on two listed creases needs their gamma equal along
   // the path (1e-9 rad at the check samples) and both faces of a crease the same thickness.
   std::vector<int> circular_edges;
+  // Split creases (seed section 10): crease `edge`'s right panel is shifted, in the crease's
+  // normal plane, by d_e(t) = d(t) u(gamma_e(t)/2) (left panel's frame; eqs 58, 59, 68: along
+  // the fold's half-angle direction), d(0) = 0, so its profiles are eqs 56/57. Two collinear
+  // creases through a vertex split with one d are the seed's collinear split (sorce_vertex.hpp,
+  // collinear_split). The poses then follow the joints from face 0 (its place_faces pose) across
+  // a spanning tree of the hinges, so the consistency check (a) measures the closure of the
+  // other hinges and the vertex closure (b) includes the split offsets. The derived end offsets
+  // (stacking rule) do not see d; the fold reports' stacking does (end_separation adds d_y(1)).
+  struct Split {
+    int edge = -1;
+    ScalarFunction d;  // length, d(0) = 0
+  };
+  std::vector<Split> splits;
   std::vector<double> pose_times;       // t of the pose table; empty: 0, 0.1, .., 1
   int check_samples = 21;               // evenly spaced t for pitch, spline closure gap, interference (>= 2)
   bool check_interference = true;
@@ -142,9 +155,15 @@ struct PatternSorce {
 };
 
 // Throws InputError: "pattern" (not flat, or without hinges), "thickness", "face_thickness[f]",
-// "end_offsets[f]", "offset_coefficients[f]", "circular_edges[k]", "pose_times[i]", "check_samples", "branch" (path
+// "end_offsets[f]", "offset_coefficients[f]", "circular_edges[k]", "splits[k]" (not a hinge crease, given twice,
+// no d, d(0) != 0), "pose_times[i]", "check_samples", "branch" (path
 // not traced / too short), and the trace's own places ("drive", "to").
 PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceRequest& request);
+
+// Every face's pose P_f(t) = M_f(t) Trans(z_f(t) n_f) on the pattern's path at any t in [0, 1]
+// (the pose table's formula; t outside is clamped by the spline). `topology` of `pattern`.
+std::vector<Eigen::Isometry3d> panel_poses(const CreasePattern& pattern, const Topology& topology, const PatternSorce& sorce,
+                                           double t);
 
 // The derived end offsets alone (rule above): sigma per edge (sign of gamma_e(1), 0: does not
 // fold), per-face thickness. Throws InputError("end_offsets") if the QP is infeasible.

@@ -1,6 +1,8 @@
 #include "design/sorce/sorce_solids.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <string>
 
@@ -65,6 +67,16 @@ bool simple_section(const std::vector<Vec2>& section) {
   for (const Vec2& p : section) bg::append(poly.outer(), BgPoint(p.x(), p.y()));
   bg::correct(poly);  // closes the ring and orients it as Boost.Geometry expects
   return bg::is_valid(poly);
+}
+
+using BgMulti = bg::model::multi_polygon<BgPolygon>;
+
+// The u-range [lo, hi] along `w_dir` of a convex polygon's points with `n` . p in [c, c + width].
+std::array<double, 2> w_range(const std::vector<Vec2>& poly, const Vec2& n, double c, double width, const Vec2& w_dir) {
+  const std::vector<Vec2> strip = clip(clip(poly, n, c), -n, -(c + width));
+  std::array<double, 2> r{1e300, -1e300};
+  for (const Vec2& p : strip) r = {std::min(r[0], w_dir.dot(p)), std::max(r[1], w_dir.dot(p))};
+  return r;
 }
 
 }  // namespace
@@ -153,6 +165,98 @@ PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options
     for (Vec2& p : section) p.x() *= mirror;  // back to the fold frame
     cams.push_back({static_cast<int>(k), std::move(section), a, b});
   }
+  // Clearance cuts (header): the back of the slab stays in `slab`, the band's pieces wait.
+  struct Piece {
+    Eigen::Vector3d origin, u, v;
+    std::vector<Vec2> section;
+    double a, b;
+  };
+  std::vector<Piece> pieces;
+  const double ov = options.overlap * h;
+  for (std::size_t k = 0; k < input.clearances.size(); ++k) {
+    const Clearance& c = input.clearances[k];
+    const std::string place = "clearances[" + std::to_string(k) + "]";
+    const double frame_error = std::max({std::abs(c.fold_direction.norm() - 1.0), std::abs(c.x_axis.norm() - 1.0),
+                                         std::abs(c.fold_direction.dot(c.x_axis)), std::abs(c.fold_direction.z()),
+                                         std::abs(c.x_axis.z())});
+    if (!(frame_error <= 1e-9) || !c.origin.allFinite()) throw InputError(place, "the fold frame must be orthonormal in the plane z = 0");
+    if (!(c.w1 > c.w0)) throw InputError(place, "the extent needs w1 > w0");
+    const Vec2 o = c.origin.head<2>(), ux = c.x_axis.head<2>(), uw = c.fold_direction.head<2>();
+    // u: distance from the fold line into this panel (the panel's side from its slab's centroid).
+    Vec2 centroid = Vec2::Zero();
+    for (const Vec2& p : slab) centroid += p / static_cast<double>(slab.size());
+    const double mirror = (centroid - o).dot(ux) < 0.0 ? 1.0 : -1.0;
+    const Vec2 into = -mirror * ux;  // u = into . (p - o)
+    double u_edge = 1e300, u_far = -1e300;
+    for (const Vec2& p : slab) u_edge = std::min(u_edge, into.dot(p - o)), u_far = std::max(u_far, into.dot(p - o));
+    BgMulti region;
+    for (const std::vector<Vec2>& ring : c.region) {
+      BgPolygon poly;
+      for (const Vec2& p : ring) {
+        if (!p.allFinite()) throw InputError(place, "region points must be finite");
+        bg::append(poly.outer(), BgPoint(-mirror * p.x(), p.y()));  // (u, y)
+      }
+      bg::correct(poly);
+      if (!bg::is_valid(poly)) throw InputError(place, "a region polygon is not simple");
+      BgMulti merged;
+      bg::union_(region, poly, merged);
+      region = std::move(merged);
+    }
+    BgPolygon depth_box;  // the slab's section from its fold edge to its far side
+    for (const Vec2& p : {Vec2(u_edge, -h / 2), Vec2(u_far, -h / 2), Vec2(u_far, h / 2), Vec2(u_edge, h / 2)})
+      bg::append(depth_box.outer(), BgPoint(p.x(), p.y()));
+    bg::correct(depth_box);
+    BgMulti inside;
+    bg::intersection(region, depth_box, inside);
+    if (!(bg::area(inside) > 1e-12 * h * h)) {
+      out.clearances_unneeded.push_back(static_cast<int>(k));
+      continue;
+    }
+    double deepest = u_edge;
+    for (const BgPolygon& poly : inside)
+      for (const BgPoint& p : poly.outer()) deepest = std::max(deepest, p.x());
+    const double u_cut = deepest + ov;
+    if (!(u_cut + ov < u_far)) throw InputError(place, "the clearance cuts the slab through");
+    // The band's extent along the fold where it is full depth (convex slab: both ends' ranges).
+    const std::array<double, 2> near_end = w_range(slab, into, into.dot(o) + u_edge, 1e-9 * h, uw);
+    const std::array<double, 2> far_end = w_range(slab, into, into.dot(o) + u_cut - 1e-9 * h, 1e-9 * h, uw);
+    const double full_lo = std::max(near_end[0], far_end[0]) - uw.dot(o), full_hi = std::min(near_end[1], far_end[1]) - uw.dot(o);
+    // Kept ov/2 inside the full-depth range: a middle piece ending exactly there would share
+    // its corner edge with the uncut end piece (an edge used twice: not a manifold).
+    // Where the band is not full depth within the clearance's extent (near a corner of the
+    // panel), it is removed whole: the uncut end pieces stop at the extent, the middle pieces
+    // start where the band is full depth.
+    const double lo_cut = c.w0 - ov, hi_cut = c.w1 + ov;
+    const double m_lo = std::max(lo_cut, full_lo + ov / 2), m_hi = std::min(hi_cut, full_hi - ov / 2);
+    const std::vector<Vec2> band = clip(slab, -into, -(into.dot(o) + u_cut));
+    slab = clip(slab, into, into.dot(o) + deepest);  // the back, reaching `overlap` into the band
+    const Eigen::Vector3d e = c.x_axis.cross(ez);
+    const double sense = e.dot(c.fold_direction) > 0.0 ? 1.0 : -1.0;
+    for (const auto& [n, off] : {std::pair{Vec2(-uw), -(uw.dot(o) + lo_cut + ov)}, std::pair{Vec2(uw), uw.dot(o) + hi_cut - ov}}) {
+      const std::vector<Vec2> end = clip(band, n, off);
+      if (end.size() >= 3 && std::abs(signed_area(end)) > 1e-12 * h * h)
+        pieces.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), end, -h / 2, h / 2});
+    }
+    BgPolygon rect;
+    for (const Vec2& p : {Vec2(u_edge, -h / 2), Vec2(u_cut, -h / 2), Vec2(u_cut, h / 2), Vec2(u_edge, h / 2)})
+      bg::append(rect.outer(), BgPoint(p.x(), p.y()));
+    bg::correct(rect);
+    BgMulti left;
+    bg::difference(rect, region, left);
+    double a = sense * m_lo, b = sense * m_hi;
+    if (a > b) std::swap(a, b);
+    if (!(m_hi > m_lo)) left.clear();  // no full-depth band within the extent: all of it removed
+    for (const BgPolygon& poly : left) {
+      if (!poly.inners().empty()) throw InputError(place, "the cut leaves a slab piece with a hole");
+      std::vector<Vec2> section;
+      for (std::size_t i = 0; i + 1 < poly.outer().size(); ++i)  // the ring repeats its first point
+        section.emplace_back(-mirror * poly.outer()[i].x(), poly.outer()[i].y());
+      if (section.size() < 3 || !(std::abs(signed_area(section)) > 1e-12 * h * h)) continue;
+      pieces.push_back({c.origin, c.x_axis, ez, std::move(section), a, b});
+      ++out.clearance_pieces;
+    }
+    if (slab.size() < 3) throw InputError(place, "the clearance cuts the slab through");
+  }
   add_prism(out, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), slab, -h / 2, h / 2);
   for (std::size_t s = 0; s < cams.size(); ++s) {
     const CamSide& c = input.cams[cams[s].index];
@@ -162,7 +266,12 @@ PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options
     if (a > b) std::swap(a, b);
     add_prism(out, static_cast<int>(s) + 1, c.origin, c.x_axis, ez, cams[s].section, a, b);
     out.cam_of_shell.push_back(cams[s].index);
+    out.cam_sections.push_back(cams[s].section);
+    out.cam_extents.push_back({cams[s].a, cams[s].b});
   }
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+    add_prism(out, static_cast<int>(cams.size() + 1 + k), pieces[k].origin, pieces[k].u, pieces[k].v, pieces[k].section,
+              pieces[k].a, pieces[k].b);
   return out;
 }
 
