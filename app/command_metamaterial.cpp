@@ -39,8 +39,8 @@ void add_metamaterial_command(CLI::App& app) {
       ->required();
   auto* alpha = cmd->add_option("--alpha-deg", s->alpha_deg,
                                 "sector alpha, degrees: square twist in (90, 180) (default 150, the seed's 5 pi/6); "
-                                "elements in (0, 180) (default 60)");
-  auto* beta = cmd->add_option("--beta-deg", s->beta_deg, "elements: sector beta, degrees in (0, 180) (default 70)");
+                                "elements in (0, 180) (default 60; the seed's Fig 3-12 values are lost)");
+  auto* beta = cmd->add_option("--beta-deg", s->beta_deg, "elements: sector beta, degrees in (0, 180) (default 70; not from the seed)");
   auto* oa = cmd->add_option("--a", s->a, "square twist: side of the central square (> 0, default 1)");
   auto* ob = cmd->add_option("--b", s->b, "square twist: S offset, flat S = 2b + a (cos alpha + sin alpha) (default 1)");
   auto* oc = cmd->add_option("--c", s->c, "square twist: L offset, flat L = 2c + a (cos alpha + sin alpha) (default 1)");
@@ -150,6 +150,7 @@ void add_metamaterial_command(CLI::App& app) {
                          {"fold_deg", to_degrees(c.fold)},
                          {"negative_after", c.negative_after}});
     j["sign_changes"] = changes;
+    j["ratios_defined"] = {{rn[0], t.nu_in_defined}, {rn[1], t.nu_out_defined}};
     j["checks"] = {{"max_constraint_residual", t.max_constraint_residual},
                    {"max_derivative_error", t.max_derivative_error},
                    {"constraint_tolerance", metamaterial::kConstraintTolerance},
@@ -194,6 +195,8 @@ void add_metamaterial_command(CLI::App& app) {
     } else {
       std::cout << "  no interior height maximum\n";
     }
+    if (!t.nu_in_defined) std::cout << "  " << rn[0] << " undefined: a dimension it is built on stays 0\n";
+    if (!t.nu_out_defined) std::cout << "  " << rn[1] << " undefined: a dimension it is built on stays 0\n";
     for (const auto& c : t.sign_changes) {
       std::snprintf(line, sizeof line, "  %s changes sign at fold %.12g deg (%s), %s after\n",
                     (c.ratio == "nu_in" ? rn[0] : rn[1]).c_str(), to_degrees(c.fold), c.kind.c_str(),

@@ -81,6 +81,9 @@ std::string line_plot_svg(const LinePlot& plot) {
     y0 -= 0.5;
     y1 += 0.5;
   }
+  const double margin = 0.04 * (y1 - y0);  // curves off the frame
+  y1 += margin;
+  if (y0 < 0 || plot.clip_quantile > 0) y0 -= margin;
   if (x1 - x0 <= 0) x1 = x0 + 1;
   const double pw = kWidth - kLeft - kRight, ph = kHeight - kTop - kBottom;
   auto sx = [&](double x) { return kLeft + (x - x0) / (x1 - x0) * pw; };

@@ -218,10 +218,26 @@ MetamaterialTable metamaterial_table(const MetamaterialParams& given) {
                           miss);
   }
 
+  // A dimension that stays at round-off level (element 1 or 2 with alpha = beta: L = 0
+  // throughout) leaves the ratios built on it undefined (NaN, no sign changes).
+  double biggest = 0, mx = 0, my = 0, mh = 0;
+  for (const auto& r : t.rows) {
+    mx = std::max(mx, std::fabs(r.x)), my = std::max(my, std::fabs(r.y)), mh = std::max(mh, std::fabs(r.H));
+    biggest = std::max({biggest, mx, my, mh});
+  }
+  const double floor = 1e-12 * biggest;
+  t.nu_in_defined = mx > floor && my > floor;
+  t.nu_out_defined = mx > floor && mh > floor;
+  for (auto& r : t.rows) {
+    if (!t.nu_in_defined) r.nu_in = std::nan("");
+    if (!t.nu_out_defined) r.nu_out = std::nan("");
+  }
+
   // Sign changes of the two ratios.
   const std::string names[2] = {"nu_in", "nu_out"};
   for (int which = 0; which < 2; ++which) {
     const bool out = which == 1;
+    if (!(out ? t.nu_out_defined : t.nu_in_defined)) continue;
     auto nu = [&](const MetamaterialRow& r) { return out ? r.nu_out : r.nu_in; };
     for (int k = 0; k + 1 < n; ++k) {
       const MetamaterialRow &a = t.rows[k], &b = t.rows[k + 1];
@@ -234,6 +250,9 @@ MetamaterialTable metamaterial_table(const MetamaterialParams& given) {
       if (opposite(na, nb)) {
         c.kind = "zero";
         c.fold = refine([&](double x) { return numerator(params, evaluate(params, x), out); }, a.fold, b.fold, na, nb);
+        // A derivative that jumps rather than passes through 0: a dimension |.| at its corner.
+        if (std::fabs(numerator(params, evaluate(params, c.fold), out)) > 1e-6 * std::max(std::fabs(na), std::fabs(nb)))
+          c.kind = "corner";
       } else if (opposite(da, db)) {
         c.kind = "pole";
         c.fold = refine([&](double x) { return denominator(params, evaluate(params, x), out); }, a.fold, b.fold, da, db);

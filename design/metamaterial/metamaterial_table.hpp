@@ -27,7 +27,8 @@
 //     kDerivativeTolerance * max(1, |nu|).
 // Sign changes: between consecutive rows whose ratio changes sign, the zero of the ratio's
 // numerator derivative (kind "zero") or of its denominator derivative (kind "pole") is
-// refined by TOMS 748 to round-off; otherwise (a dimension passing through 0) the sign change
+// refined by TOMS 748 to round-off (kind "corner" when the numerator derivative jumps there
+// instead of passing through 0: a dimension taken as |.| at 0); otherwise the sign change
 // is bisected on the ratio itself (kind "dimension"). Roots closer than one sample spacing
 // may be missed.
 // Height maximum: the highest stationary maximum of H among the refined zeros of dH/dfold
@@ -71,7 +72,7 @@ struct MetamaterialRow {
 
 struct MetamaterialSignChange {
   std::string ratio;  // "nu_in" or "nu_out"
-  std::string kind;   // "zero", "pole" or "dimension"
+  std::string kind;   // "zero", "corner", "pole" or "dimension"
   double fold = 0.0;  // radians
   bool negative_after = false;  // the ratio's sign just after the change (larger fold)
 };
@@ -83,6 +84,9 @@ struct MetamaterialTable {
   double height_maximum_fold = 0.0;  // radians
   double height_maximum = 0.0;
   int height_stationary_points = 0;  // refined zeros of dH/dfold
+  // False when a dimension the ratio is built on stays within 1e-12 of the largest dimension
+  // (element 1 or 2 with alpha = beta: L = 0 throughout): that ratio is NaN in every row.
+  bool nu_in_defined = true, nu_out_defined = true;
   std::vector<MetamaterialSignChange> sign_changes;  // ordered by fold
   double max_constraint_residual = 0.0;
   double max_derivative_error = 0.0;

@@ -147,6 +147,21 @@ TEST(MetamaterialTable, TinyAndHugeUnitsScale) {
   }
 }
 
+// Element 1 with alpha = beta has L = 0 throughout (round-off): nu_in is undefined, not a
+// run of sign changes of round-off noise; nu_out (H over W) keeps its height-maximum change.
+TEST(MetamaterialTable, RatioOnAZeroDimensionIsUndefined) {
+  MetamaterialParams p;
+  p.unit = MetamaterialUnit::kElement1;
+  p.element = {to_radians(50.0), to_radians(50.0), 1.0};
+  const MetamaterialTable t = metamaterial_table(p);
+  EXPECT_FALSE(t.nu_in_defined);
+  EXPECT_TRUE(t.nu_out_defined);
+  for (const auto& r : t.rows) EXPECT_TRUE(std::isnan(r.nu_in));
+  for (const auto& c : t.sign_changes) EXPECT_EQ(c.ratio, "nu_out");
+  p.element.beta = to_radians(70.0);
+  EXPECT_TRUE(metamaterial_table(p).nu_in_defined);
+}
+
 TEST(MetamaterialTable, RefusesBadParameters) {
   MetamaterialParams p = twist(150.0, 2);
   EXPECT_THROW(metamaterial_table(p), std::invalid_argument);
