@@ -28,7 +28,7 @@ namespace rigidfold::sorce {
 struct ClearanceOptions {
   bool cut = false;      // off: panels as panel_solid builds them without clearances
   double margin = 0.05;  // grown around the swept region, as a fraction of the cut face's thickness (> 0)
-  int samples = 201;     // sweep samples in t (>= 2)
+  int samples = 41;      // sweep samples in t (>= 2), each interval refined as below
 };
 
 struct ClearanceCut {
