@@ -97,6 +97,11 @@ for f in data/network/*.json; do
     ./build/app/rigidfold network "$f" --json --trace 12 > "out/report/network/$name"
   fi
 done
+# Metamaterial units (seed 003 ch. 3): the square twist's dimensions and Poisson's ratios along
+# its motion (nu_HL changes sign at the height maximum), table and plots.
+./build/app/rigidfold metamaterial --unit square-twist --json --plot out/report/metamaterial/square_twist \
+  > out/report/metamaterial_square_twist.json
+./build/app/rigidfold metamaterial --unit element3 --plot out/report/metamaterial/element3 >/dev/null
 # The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
 # playable from out/report/viewer/index.html, and a screenshot of it (type2m.png).
 bash viewer/main_job.sh out/report
