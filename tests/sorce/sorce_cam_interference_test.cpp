@@ -8,23 +8,15 @@
 #include <string>
 
 #include "design/sorce/sorce_cam_interference.hpp"
+#include "tests/sorce/sorce_pattern_requests.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::sorce {
 namespace {
 
-const std::string kVertexA = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/sorce/vertex_a.fold";
-
-PatternSorceRequest vertex_a_request(double h) {
-  PatternSorceRequest rq;
-  rq.thickness = h;
-  rq.trace.drive = 1;  // fold 2
-  rq.trace.to = M_PI;
-  rq.trace.steps = 40;
-  rq.report.samples = 401;
-  return rq;
-}
+using testing::kVertexA;
+PatternSorceRequest vertex_a_request(double h) { return testing::single_vertex_request(h); }
 
 // Depth of x inside the convex shell `polygons` (outward polygons): min over its planes of
 // the distance behind the plane (> 0 strictly inside).

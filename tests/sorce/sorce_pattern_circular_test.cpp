@@ -9,23 +9,15 @@
 #include <string>
 
 #include "design/sorce/sorce_pattern.hpp"
+#include "tests/sorce/sorce_pattern_requests.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
 namespace {
 
-const std::string kVertexA = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/sorce/vertex_a.fold";
-
-PatternSorceRequest vertex_a_request(double h) {
-  PatternSorceRequest rq;
-  rq.thickness = h;
-  rq.trace.drive = 1;  // fold 2
-  rq.trace.to = M_PI;
-  rq.trace.steps = 40;
-  rq.report.samples = 401;
-  return rq;
-}
+using testing::kVertexA;
+PatternSorceRequest vertex_a_request(double h) { return testing::single_vertex_request(h); }
 
 TEST(SorcePatternCircular, ForcedCircularFoldRollsOnArcsOfHalfTheThickness) {
   const CreasePattern p = read_fold(kVertexA);

@@ -12,6 +12,7 @@
 
 #include "design/sorce/sorce_design.hpp"
 #include "design/sorce/sorce_pattern.hpp"
+#include "tests/sorce/sorce_pattern_requests.hpp"
 #include "design/sorce/sorce_split_spec.hpp"
 #include "design/sorce/sorce_vertex.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -21,18 +22,9 @@
 namespace rigidfold::sorce {
 namespace {
 
-const std::string kVertexB = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/sorce/vertex_b.fold";
+using testing::kVertexB;
 const VertexSectors kSectorsB = {to_radians(135.0), to_radians(45.0), to_radians(45.0), to_radians(135.0)};
-
-PatternSorceRequest vertex_b_request(double h) {
-  PatternSorceRequest rq;
-  rq.thickness = h;
-  rq.trace.drive = 1;  // fold 2
-  rq.trace.to = M_PI;
-  rq.trace.steps = 40;
-  rq.report.samples = 401;
-  return rq;
-}
+PatternSorceRequest vertex_b_request(double h) { return testing::single_vertex_request(h); }
 
 TEST(SorceSplitPattern, BirdsFootSplitMatchesTheVertexCollinearSplit) {
   const CreasePattern p = read_fold(kVertexB);
