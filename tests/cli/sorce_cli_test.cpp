@@ -128,6 +128,27 @@ TEST(SorceCli, OptimizeReportsItsSearch) {
   fs::remove(pattern);
 }
 
+// --split on the bird's-foot vertex's collinear folds (eq 61's shape, d = 0.04 t^2): the
+// split creases' profiles change (arc length), the others do not, and the vertex still closes
+// at the knots with the split translations included.
+TEST(SorceCli, SplitCollinearFoldsOfTheBirdsFootVertex) {
+  const std::string vertex_b = kSource + "data/sorce/vertex_b.fold --thickness 0.1 --drive 1 --to 180 --json";
+  const auto plain = test::run_command(test::cli() + " sorce " + vertex_b);
+  const auto split = test::run_command(test::cli() + " sorce " + vertex_b + " --split 0:quadratic:0.04 --split 2:quadratic:0.04");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(split.status, 0) << split.err;
+  const nlohmann::json a = nlohmann::json::parse(plain.out), b = nlohmann::json::parse(split.out);
+  EXPECT_LE(b["checks"]["closure_knots"].get<double>(), 1e-12);
+  for (std::size_t k = 0; k < b["creases"].size(); ++k) {
+    const int edge = b["creases"][k]["edge"].get<int>();
+    const double la = a["creases"][k]["arc_length"][0].get<double>(), lb = b["creases"][k]["arc_length"][0].get<double>();
+    if (edge == 0 || edge == 2)
+      EXPECT_GT(std::abs(lb - la), 1e-3) << "edge " << edge;
+    else
+      EXPECT_NEAR(lb, la, 1e-12) << "edge " << edge;
+  }
+}
+
 TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
   const fs::path out = scratch("never");
   fs::remove_all(out);
@@ -156,6 +177,10 @@ TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
       {kMiura + " --thickness 0.05 --circular 0", "--circular [0]"},
       {kMiura + " --thickness 0.05 --circular x", "--circular"},
       {kSource + "data/bundled/miura_12x12_folded.fold --thickness 0.05", "miura_12x12_folded.fold"},
+      {kSource + "data/sorce/vertex_b.fold --thickness 0.1 --split 9:linear:0.1", "--split 9:linear:0.1"},
+      {kSource + "data/sorce/vertex_b.fold --thickness 0.1 --split 0:cubic:1", "--split 0:cubic:1"},
+      {kSource + "data/sorce/vertex_b.fold --thickness 0.1 --split 0:linear:1e7", "--split 0:linear:1e7"},
+      {kSource + "data/sorce/vertex_b.fold --thickness 0.1 --split x --out " + out.string(), "--split x"},
   };
   for (const auto& [args, place] : cases) {
     const auto r = test::run_command(test::cli() + " sorce " + args);
