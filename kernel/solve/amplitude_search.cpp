@@ -44,7 +44,13 @@ AmplitudeSearchResult amplitude_search(const ClosureSystem& sys, const Eigen::Ve
   AmplitudeSearchResult out;
   Point p = evaluate(sys, x0.cwiseMax(lower).cwiseMin(upper), opt.amplitude);
   Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
-  Eigen::Index analysed_nnz = -1;
+  // The pattern the symbolic analysis was done for (Eigen keeps structural zeros in these
+  // products, so it stays the same between steps; compared in full to be sure).
+  std::vector<int> analysed_outer, analysed_inner;
+  auto same_pattern = [&](const Eigen::SparseMatrix<double>& A) {
+    return std::equal(analysed_outer.begin(), analysed_outer.end(), A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1) &&
+           std::equal(analysed_inner.begin(), analysed_inner.end(), A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  };
   double mu = 1e-6;
   std::vector<double> history{p.objective};
   auto done = [&](const Point& q) { return inf_norm(q.r) <= opt.tolerance && std::abs(q.a) <= opt.tolerance; };
@@ -69,9 +75,10 @@ AmplitudeSearchResult amplitude_search(const ClosureSystem& sys, const Eigen::Ve
       I.setIdentity();
       const Eigen::VectorXd diag = free_mask * mu + (Eigen::VectorXd::Ones(n) - free_mask);
       const Eigen::SparseMatrix<double> A = JtJ + Eigen::SparseMatrix<double>(I * diag.asDiagonal());
-      if (A.nonZeros() != analysed_nnz) {
+      if (!A.isCompressed() || !same_pattern(A)) {
         llt.analyzePattern(A);
-        analysed_nnz = A.nonZeros();
+        analysed_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+        analysed_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
       }
       llt.factorize(A);
       ++out.factorizations;
