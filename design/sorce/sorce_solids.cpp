@@ -62,6 +62,16 @@ std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Vec2& n, double c) {
   return out;
 }
 
+// A cam's or a clearance's fold frame: origin finite, fold direction and x axis orthonormal in
+// the plane z = 0 (to 1e-9).
+void check_fold_frame(const Eigen::Vector3d& origin, const Eigen::Vector3d& fold_direction, const Eigen::Vector3d& x_axis,
+                      const std::string& place) {
+  const double frame_error = std::max({std::abs(fold_direction.norm() - 1.0), std::abs(x_axis.norm() - 1.0),
+                                       std::abs(fold_direction.dot(x_axis)), std::abs(fold_direction.z()),
+                                       std::abs(x_axis.z())});
+  if (!(frame_error <= 1e-9) || !origin.allFinite()) throw InputError(place, "the fold frame must be orthonormal in the plane z = 0");
+}
+
 bool simple_section(const std::vector<Vec2>& section) {
   BgPolygon poly;
   for (const Vec2& p : section) bg::append(poly.outer(), BgPoint(p.x(), p.y()));
@@ -116,10 +126,7 @@ PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options
   for (std::size_t k = 0; k < input.cams.size(); ++k) {
     const CamSide& c = input.cams[k];
     const std::string place = "cams[" + std::to_string(k) + "]";
-    const double frame_error = std::max({std::abs(c.fold_direction.norm() - 1.0), std::abs(c.x_axis.norm() - 1.0),
-                                         std::abs(c.fold_direction.dot(c.x_axis)), std::abs(c.fold_direction.z()),
-                                         std::abs(c.x_axis.z())});
-    if (!(frame_error <= 1e-9) || !c.origin.allFinite()) throw InputError(place, "the fold frame must be orthonormal in the plane z = 0");
+    check_fold_frame(c.origin, c.fold_direction, c.x_axis, place);
     if (!(c.w1 > c.w0)) throw InputError(place, "the crease extent needs w1 > w0");
     if (c.profile.size() < 2) throw InputError(place, "a profile needs at least 2 points");
     // The right panel mirrored (x -> -x) so that both panels lie at x < 0 of the fold line.
@@ -176,10 +183,7 @@ PanelSolid panel_solid(const PanelSolidInput& input, const SolidOptions& options
   for (std::size_t k = 0; k < input.clearances.size(); ++k) {
     const Clearance& c = input.clearances[k];
     const std::string place = "clearances[" + std::to_string(k) + "]";
-    const double frame_error = std::max({std::abs(c.fold_direction.norm() - 1.0), std::abs(c.x_axis.norm() - 1.0),
-                                         std::abs(c.fold_direction.dot(c.x_axis)), std::abs(c.fold_direction.z()),
-                                         std::abs(c.x_axis.z())});
-    if (!(frame_error <= 1e-9) || !c.origin.allFinite()) throw InputError(place, "the fold frame must be orthonormal in the plane z = 0");
+    check_fold_frame(c.origin, c.fold_direction, c.x_axis, place);
     if (!(c.w1 > c.w0)) throw InputError(place, "the extent needs w1 > w0");
     const Vec2 o = c.origin.head<2>(), ux = c.x_axis.head<2>(), uw = c.fold_direction.head<2>();
     // u: distance from the fold line into this panel (the panel's side from its slab's centroid).
