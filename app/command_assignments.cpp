@@ -78,7 +78,7 @@ void add_assignments_command(CLI::App& app) {
     j["listed"] = list;
     j["seconds"] = r.seconds;
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     std::cout << a->pattern << "\n";

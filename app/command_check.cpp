@@ -68,7 +68,7 @@ void add_check_command(CLI::App& app) {
     if (a->json) {
       nlohmann::ordered_json j = {{"file", a->pattern}};
       j.update(foldability_json(r));
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     print_text(a->pattern, r);

@@ -76,7 +76,7 @@ void add_energy_command(CLI::App& app) {
     j["rest"] = a->rest;
     j.update(crease_spring_states_json(p, t, problem, found));
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     std::cout << a->pattern << ": " << s.states.size() << " stable state(s) from " << s.starts << " starts (the rest state and "

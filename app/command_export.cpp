@@ -59,7 +59,7 @@ void add_export_command(CLI::App& app) {
     j["developed_from_3d"] = dev.unfolded;
     j["development_relative_mismatch"] = dev.relative_mismatch;
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
     } else {
       std::cout << a->in << " -> " << (a->svg.empty() ? a->dxf : a->dxf.empty() ? a->svg : a->svg + " and " + a->dxf) << "\n  " << j["vertices"] << " vertices, " << j["edges"] << " edges " << letters.dump()
                 << ", " << j["faces"] << " faces";

@@ -60,7 +60,7 @@ void add_fold_command(CLI::App& app) {
     j["worst_edge"] = g.worst_edge;
     j["non_tree_hinges"] = g.non_tree_hinges;
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
     } else {
       std::cout << "folded " << a->pattern << " -> " << a->out << (a->obj.empty() ? "" : " and " + a->obj) << (a->stl.empty() ? "" : " and " + a->stl) << "\n";
       std::cout << "  closure mismatch " << to_file_units(p, g.max_mismatch) << " (relative " << g.relative_mismatch() << ") over "

@@ -105,7 +105,7 @@ void add_import_command(CLI::App& app) {
     outputs.stage(a->out, write_fold_string(p));
     outputs.commit();
     const auto j = import_json(a->in, a->out, p, t, summary);
-    if (a->json) std::cout << with_provenance(j).dump(2) << "\n";
+    if (a->json) std::cout << document_text(j) << "\n";
     else print_text(j);
   });
 }

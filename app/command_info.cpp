@@ -132,7 +132,7 @@ void add_info_command(CLI::App& app) {
     const CreasePattern p = read_pattern(*path);
     const Topology t = build_topology(p, *path);
     const auto j = info_json(*path, p, t, *tol);
-    if (*json) std::cout << with_provenance(j).dump(2) << "\n";
+    if (*json) std::cout << document_text(j) << "\n";
     else print_text(j);
   });
 }

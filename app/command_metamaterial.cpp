@@ -174,7 +174,7 @@ void add_metamaterial_command(CLI::App& app) {
     }
     j["rows"] = rows;
     if (s->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     char line[320];

@@ -92,7 +92,7 @@ void add_network_command(CLI::App& app) {
                             {"starts", start.starts}};
       j["verdict"] = "not mobile through the input's start value (evidence: no closed configuration found)";
       if (a->json) {
-        std::cout << with_provenance(j).dump(2) << "\n";
+        std::cout << document_text(j) << "\n";
         return;
       }
       std::printf("network %s: %d joints, %d linkages, %d equations\n", a->path.c_str(), net.num_joints(),
@@ -170,7 +170,7 @@ void add_network_command(CLI::App& app) {
       j["trace"] = tr;
     }
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     std::printf("network %s: %d joints, %d linkages, %d equations\n", a->path.c_str(), net.num_joints(), net.num_linkages(),

@@ -185,7 +185,7 @@ void add_report_command(CLI::App& app) {
       if (j.contains("relative_closure_mismatch")) std::cout << "; folded state closure mismatch " << j["relative_closure_mismatch"].get<double>();
       std::cout << "\n";
     }
-    outputs.stage(json_path, with_provenance(report).dump(2) + "\n");
+    outputs.stage(json_path, document_text(report) + "\n");
     outputs.stage(md_path, markdown(report));
     outputs.commit();
   });

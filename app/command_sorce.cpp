@@ -381,11 +381,11 @@ void add_sorce_command(CLI::App& app) {
       }
       for (const char* n : {"profiles.svg", "profiles.dxf", "frames.fold", "poses.csv"}) files[n] = out_file(n);
       j["out"] = files;
-      outputs.stage(out_file("sorce.json"), with_provenance(j).dump(2) + "\n");
+      outputs.stage(out_file("sorce.json"), document_text(j) + "\n");
     }
     outputs.commit();
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     std::cout << a->pattern << ": SORCE joints on " << reports.size() << " folding crease(s), thickness " << a->thickness << "\n";

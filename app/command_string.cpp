@@ -278,7 +278,7 @@ std::vector<Eigen::Vector3d> read_curve(const Reader& r) {
 }
 
 void print_or_json(const json& j, bool as_json, const std::string& text) {
-  if (as_json) std::cout << with_provenance(j).dump(2) << "\n";
+  if (as_json) std::cout << document_text(j) << "\n";
   else std::cout << text;
 }
 

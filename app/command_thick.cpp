@@ -267,7 +267,7 @@ void add_thick_command(CLI::App& app) {
     outputs.commit();
 
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     char line[320];

@@ -310,7 +310,7 @@ void add_trace_command(CLI::App& app) {
     for (const auto& f : files) outs.push_back(f.first);
     j["outputs"] = outs;
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     print_text(a->pattern, p, m, files);

@@ -73,7 +73,7 @@ void add_miura_command(CLI::App& vertex) {
     j["closure_residual_rad"] =
         vertex_closure_residual(std::span<const double>(st.sectors.data(), 4), std::span<const double>(st.fold_angles.data(), 4)).norm();
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     char line[256];
@@ -134,7 +134,7 @@ void add_vertex_command(CLI::App& app) {
     j["degenerate"] = b.degenerate;
     j["input_range_deg"] = {{"feasible", range.feasible}, {"min_abs", to_degrees(range.min_abs)}, {"max_abs", to_degrees(range.max_abs)}};
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     std::cout << "spherical 4R, twists " << a->twists[0] << ", " << a->twists[1] << ", " << a->twists[2] << ", " << a->twists[3]

@@ -156,7 +156,7 @@ void add_waterbomb_command(CLI::App& app) {
     }
     outputs.commit();
     if (a->json) {
-      std::cout << with_provenance(j).dump(2) << "\n";
+      std::cout << document_text(j) << "\n";
       return;
     }
     char line[320];

@@ -76,4 +76,12 @@ nlohmann::json with_provenance(nlohmann::json document) {
 
 std::string version_text() { return std::string("rigidfold ") + kRigidfoldVersion + " (commit " + kRigidfoldCommit + ")"; }
 
+std::string document_text(const nlohmann::ordered_json& document) {
+  return with_provenance(document).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
+std::string document_text(const nlohmann::json& document) {
+  return with_provenance(document).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace rigidfold::cli

@@ -27,6 +27,12 @@ nlohmann::ordered_json provenance_json();
 nlohmann::ordered_json with_provenance(nlohmann::ordered_json document);
 nlohmann::json with_provenance(nlohmann::json document);
 
+// The text a command prints or writes for `document`: with_provenance(document), indented by
+// two spaces. Paths and arguments are bytes that need not be UTF-8, which JSON strings must
+// be: such bytes are written as U+FFFD rather than failing after the files were written.
+std::string document_text(const nlohmann::ordered_json& document);
+std::string document_text(const nlohmann::json& document);
+
 // "rigidfold 0.1.0 (commit ...)": the --version text.
 std::string version_text();
 

@@ -294,23 +294,25 @@ nlohmann::ordered_json fold_to_json(const CreasePattern& p) {
 }
 
 // One top-level key per line and one array element per line: diff-friendly, and far
-// smaller than fully indented JSON for large patterns.
+// smaller than fully indented JSON for large patterns. Strings that are not UTF-8 (a title
+// taken from a file name) get U+FFFD: a FOLD file is JSON, and failing here would be late.
 std::string dump_fold_json(const nlohmann::ordered_json& doc) {
+  const auto text = [](const Json& v) { return v.dump(-1, ' ', false, Json::error_handler_t::replace); };
   std::string out = "{\n";
   bool first = true;
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     if (!first) out += ",\n";
     first = false;
-    out += "  " + Json(it.key()).dump() + ": ";
+    out += "  " + text(Json(it.key())) + ": ";
     const Json& v = it.value();
     const bool nested = v.is_array() && !v.empty() && (v.front().is_array() || v.front().is_object());
     if (!nested) {
-      out += v.dump();
+      out += text(v);
       continue;
     }
     out += "[\n";
     for (std::size_t i = 0; i < v.size(); ++i) {
-      out += "    " + v[i].dump();
+      out += "    " + text(v[i]);
       out += (i + 1 < v.size()) ? ",\n" : "\n";
     }
     out += "  ]";

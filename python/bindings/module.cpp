@@ -10,7 +10,7 @@
 namespace rigidfold::python {
 
 py::object json_to_python(const nlohmann::ordered_json& j) {
-  return py::module_::import("json").attr("loads")(j.dump());
+  return py::module_::import("json").attr("loads")(j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
 }  // namespace rigidfold::python

@@ -289,6 +289,38 @@ bool temporary_exists(const fs::path& dir, const std::string& name) {
 // SIGINT/SIGTERM while `trace --out` computes, and while it writes (the signal sent as soon
 // as the temporary appears): the old file stays, or the new one is complete (the run
 // finished first); never a partial file, never a temporary left over.
+// File names are bytes; JSON strings must be UTF-8. A path that is not UTF-8 is a legal name:
+// the command does its work, writes the file under its real name, and its JSON names it with
+// U+FFFD (before the fix every --json run with such a path ended in "internal error" after
+// its files were written: cli_flags_fuzz found it on `sorce --out`).
+TEST(HostileInput, NonUtf8PathsAreLegalAndTheirJsonStaysValid) {
+  const std::string odd = "odd\xb2";
+  const std::string pattern = scratch().path(odd + ".fold");
+  fs::copy_file(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_3x3_perturbed.fold", pattern,
+                fs::copy_options::overwrite_existing);
+  struct Case {
+    std::string args, written;
+  };
+  const std::vector<Case> cases{
+      {"check --json " + pattern, ""},
+      {"info --json " + pattern, ""},
+      {"export --json " + pattern + " --svg " + scratch().path(odd + ".svg"), scratch().path(odd + ".svg")},
+      {"sorce --json " + std::string(RIGIDFOLD_SOURCE_DIR) + "/data/sorce/vertex_a.fold --thickness 0.1 --out " +
+           scratch().path(odd + "_sorce"),
+       scratch().path(odd + "_sorce/sorce.json")},
+      {"metamaterial --json --unit element1 --plot " + scratch().path(odd + "_plot"), scratch().path(odd + "_plot")},
+  };
+  for (const Case& c : cases) {
+    const Outcome o = run_limited(c.args);
+    ASSERT_EQ(o.status, 0) << c.args << "\n" << o.err;
+    const nlohmann::json j = nlohmann::json::parse(o.out);  // throws (fails the test) if not valid JSON
+    EXPECT_NE(j.dump().find("odd\xef\xbf\xbd"), std::string::npos) << c.args << ": the path is named with U+FFFD";
+    if (!c.written.empty()) {
+      EXPECT_TRUE(fs::exists(c.written)) << c.args;
+    }
+  }
+}
+
 TEST(HostileInput, InterruptedTraceLeavesTheOldFileOrTheWholeNewOne) {
   const std::string miura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_12x12_folded.fold";
   const fs::path dir = scratch().path("interrupt");
