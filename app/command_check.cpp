@@ -1,4 +1,4 @@
-// rigidfold check PATTERN.fold [--ignore-assignment] [--general] [--json]
+// rigidfold check PATTERN.fold [--ignore-assignment] [--general] [--tolerance auto|exact|U] [--json]
 // Rigid-foldability verdict (kernel/analysis/foldability_report.hpp: check_foldability).
 // Exit 0 whether or not it folds; 2 on bad input.
 #include <iostream>
@@ -7,9 +7,11 @@
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
 #include "app/foldability_json.hpp"
+#include "app/number_flags.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 
 namespace rigidfold::cli {
@@ -18,6 +20,7 @@ namespace {
 void print_text(const std::string& file, const FoldabilityReport& r) {
   std::cout << file << ": " << to_string(r.verdict) << " (model: " << r.model_name << ")\n";
   std::cout << "  " << r.reason << "\n";
+  std::cout << "  precision: " << r.coordinate_precision << "\n";
   if (r.foldable()) {
     std::cout << "  DOF " << r.dof << ", max closure residual along the branch " << r.max_residual << " rad";
     if (r.certificate_mismatch) std::cout << ", certificate mismatch " << *r.certificate_mismatch;
@@ -48,18 +51,33 @@ void add_check_command(CLI::App& app) {
   struct Args {
     std::string pattern;
     bool ignore = false, json = false, general = false;
+    std::string tolerance = "auto";
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->add_flag("--general", a->general, "force the general loop-closure solver (skip multiplier propagation)");
+  cmd->add_option("--tolerance", a->tolerance,
+                  "how far each coordinate may lie from the true one, in the file's length unit: auto (default: read off "
+                  "the file's digits, float32 or drawn points), exact (judge the numbers as they are), or a number >= 0");
   cmd->callback([a] {
+    std::optional<double> tolerance;
+    if (a->tolerance == "exact") {
+      tolerance = 0.0;
+    } else if (a->tolerance != "auto") {
+      double u = -1;
+      const std::string err = finite_number_error(a->tolerance, u);
+      if (!err.empty() || u < 0)
+        throw InputError("--tolerance", "'" + a->tolerance + "' is not auto, exact or a finite number >= 0");
+      tolerance = u;
+    }
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     FoldabilityOptions options;
     options.use_assignment = !a->ignore;
     options.force_general = a->general;
+    options.coordinate_tolerance = tolerance;
     const FoldabilityReport r = [&] {
       TerminalProgress progress("check");  // its line is erased before the result is printed
       options.progress = progress.sink();

@@ -143,6 +143,7 @@ Json foldability_json(const FoldabilityReport& r) {
   j["dof"] = r.dof;
   j["dof_tolerance"] = r.dof_basis;
   j["tolerances"] = tolerances_json(r.tolerances);
+  j["coordinate_precision"] = r.coordinate_precision;
   if (r.model == FoldabilityModel::kGivenStateHoleClosure) {
     j["holes_closed"] = r.holes_closed;
     j["reference_residual"] = r.reference_residual;

@@ -77,7 +77,7 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"rigidfold"};
   if (size == 0) return args;
-  switch (data[0] % 10) {
+  switch (data[0] % 11) {  // every case reachable (with % 10, check was not: sorce took 9)
     case 0: args.insert(args.end(), {"generate"}); break;
     case 1: args.insert(args.end(), {"trace", kPattern}); break;
     case 2: args.insert(args.end(), {"trace", kPattern, "--general"}); break;
@@ -88,7 +88,7 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     case 7: args.insert(args.end(), {"metamaterial"}); break;
     case 8: args.insert(args.end(), {"thick", kMiura}); break;
     case 9: args.insert(args.end(), {"sorce", kVertexA}); break;
-    default: args.insert(args.end(), {"check", kPattern}); break;
+    default: args.insert(args.end(), {"check", kPattern}); break;  // 10
   }
   std::string token;
   const auto flush = [&] {

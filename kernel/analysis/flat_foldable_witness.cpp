@@ -257,7 +257,8 @@ class GainRows {
 }  // namespace
 
 std::optional<FlatFoldableWitness> flat_foldable_witness(const CreasePattern& pattern, const Topology& topology,
-                                                         double kawasaki_tolerance, const std::vector<FlatFoldMode>* gain_modes) {
+                                                         double kawasaki_tolerance, const std::vector<FlatFoldMode>* gain_modes,
+                                                         std::optional<double> stated_tolerance) {
   if (topology.interior_vertices.empty()) return std::nullopt;
   for (const Eigen::Vector3d& v : pattern.vertices)
     if (v.z() != 0.0) return std::nullopt;
@@ -288,7 +289,7 @@ std::optional<FlatFoldableWitness> flat_foldable_witness(const CreasePattern& pa
   // How far each coordinate may move: down[c] below it, up[c] above it.
   Eigen::VectorXd down(n), up(n);
   const CreasePattern::PositionBounds& bounds = pattern.position_bounds;
-  if (bounds.covers(pattern.num_vertices())) {
+  if (!stated_tolerance && bounds.covers(pattern.num_vertices())) {
     // The reader knows the box of each vertex (an SVG's drawn points and their rounding).
     w.drawn_point_bounds = true;
     w.precision.decimal_places = bounds.decimal_places;
@@ -305,7 +306,7 @@ std::optional<FlatFoldableWitness> flat_foldable_witness(const CreasePattern& pa
                                : *std::max_element(w.precision.vertex_rounding.begin(), w.precision.vertex_rounding.end());
     if (!std::isfinite(w.precision.max_rounding)) return std::nullopt;  // a crossing with no usable bound
   } else {
-    w.precision = coordinate_precision(pattern);
+    w.precision = input_precision(pattern, stated_tolerance);
     if (!w.precision.rounded) return std::nullopt;
     for (int i = 0; i < pattern.num_vertices(); ++i)
       down[2 * i] = down[2 * i + 1] = up[2 * i] = up[2 * i + 1] = w.precision.vertex_rounding[i];

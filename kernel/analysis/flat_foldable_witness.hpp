@@ -71,8 +71,11 @@ struct FlatFoldableWitness {
 // those modes (loop gain 1, rows solved with the Kawasaki rows; their Jacobian by central
 // differences). Then a pattern already flat-foldable as read is moved too. nullopt when the
 // modes leave a tie with a zero multiplier, a cycle with a negative gain, or no cycle.
+// stated_tolerance: the user's bound on each coordinate (input_precision), used instead of
+// the reader's boxes and the digits; 0 (exact data): no witness.
 std::optional<FlatFoldableWitness> flat_foldable_witness(const CreasePattern& pattern, const Topology& topology,
                                                          double kawasaki_tolerance,
-                                                         const std::vector<FlatFoldMode>* gain_modes = nullptr);
+                                                         const std::vector<FlatFoldMode>* gain_modes = nullptr,
+                                                         std::optional<double> stated_tolerance = std::nullopt);
 
 }  // namespace rigidfold

@@ -50,7 +50,7 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
   if (count_holes(t) == 0 && !t.interior_vertices.empty()) {
     const Eigen::VectorXd given = reference_fold_angles(p, t);
     if (max_vertex_closure_residual(t, given) > o.tolerances.certificate_residual)
-      witness = rounding_witness(p, t, given);
+      witness = rounding_witness(p, t, given, o.coordinate_tolerance);
   }
   report_progress(o.progress, [] { return std::string("given-state model: rank and branches at the given state"); });
   ReferenceMobility m = reference_mobility(p, witness && witness->explained ? witness->witness : t, mo);
@@ -98,10 +98,14 @@ void given_state_report(const CreasePattern& p, const Topology& t, const Foldabi
     r.dof = 0;
     r.branches.clear();
     r.obstruction.reset();
-    r.reason = "the given state leaves a closure gap of " + short_text(ip.given_residual) +
-               " rad, more than the file's rounding explains (" + precision_text + "; the least sector change closing it is " +
-               short_text(ip.max_change_ratio) + " x its bound at vertex " + std::to_string(witness->worst_vertex) +
-               "): not a rigidly folded state of this pattern within its precision";
+    if (!witness->precision.rounded)  // --tolerance exact: no change is allowed
+      r.reason = "the given state leaves a closure gap of " + short_text(ip.given_residual) + " rad and the " +
+                 describe_precision(witness->precision) + ": it is no configuration of this pattern, nor is the flat state";
+    else
+      r.reason = "the given state leaves a closure gap of " + short_text(ip.given_residual) +
+                 " rad, more than the file's rounding explains (" + precision_text + "; the least sector change closing it is " +
+                 short_text(ip.max_change_ratio) + " x its bound at vertex " + std::to_string(witness->worst_vertex) +
+                 "): not a rigidly folded state of this pattern within its precision";
   } else if (r.foldable()) {
     r.verdict = FoldabilityClass::kFoldableWithinTolerance;
     r.reason = "foldable within the input's precision: " + precision_text + "; a pattern whose sectors differ from the file's by at most " +
@@ -235,6 +239,7 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   GeneralVerdictOptions go;
   go.use_assignment = o.use_assignment;
   go.tolerances = o.tolerances;
+  go.coordinate_tolerance = o.coordinate_tolerance;
   go.progress = o.progress;
   GeneralVerdict g = general_verdict(p, t, go);
   r.model = FoldabilityModel::kGeneralLoopClosure;
@@ -446,7 +451,8 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
                                                 : verdict_ignoring_assignment(pattern, topology, vo);
   if (v.verdict == Verdict::kNotApplicable) {
     // Not flat-foldable as read: within the rounding of the file's coordinates?
-    std::optional<FlatFoldableWitness> w = flat_foldable_witness(pattern, topology, options.tolerances.flat_kawasaki);
+    std::optional<FlatFoldableWitness> w = flat_foldable_witness(pattern, topology, options.tolerances.flat_kawasaki, nullptr,
+                                                                   options.coordinate_tolerance);
     if (w && w->explained) {
       FoldabilityVerdict wv = options.use_assignment ? verdict_with_assignment(w->witness, w->witness_topology, vo)
                                                      : verdict_ignoring_assignment(w->witness, w->witness_topology, vo);
@@ -461,7 +467,8 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
           modes.push_back(m[0]);
         }
         if (modes.size() == w->witness_topology.interior_vertices.size()) {
-          std::optional<FlatFoldableWitness> w2 = flat_foldable_witness(pattern, topology, options.tolerances.flat_kawasaki, &modes);
+          std::optional<FlatFoldableWitness> w2 = flat_foldable_witness(pattern, topology, options.tolerances.flat_kawasaki, &modes,
+                                                                         options.coordinate_tolerance);
           if (w2 && w2->explained) {
             FoldabilityVerdict wv2 = verdict_with_assignment(w2->witness, w2->witness_topology, vo);
             if (wv2.verdict == Verdict::kRigidlyFoldable) {
@@ -541,9 +548,13 @@ void check_pieces(const CreasePattern& pattern, const Topology& topology, const 
 FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology& topology,
                                     const FoldabilityOptions& options) {
   const auto start = Clock::now();
+  if (options.coordinate_tolerance && !(*options.coordinate_tolerance >= 0 && std::isfinite(*options.coordinate_tolerance)))
+    throw std::invalid_argument("check_foldability: coordinate_tolerance must be finite and >= 0");
   FoldabilityReport r;
   r.assignment_used = options.use_assignment;
   r.tolerances = options.tolerances;
+  const std::string precision = describe_input_precision(pattern, options.coordinate_tolerance);
+  r.coordinate_precision = precision;
   try {
     report_progress(options.progress, [] { return std::string("choosing the model"); });
     const ModelChoice c = choose_model(pattern, topology, options);
@@ -593,6 +604,7 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
     r = FoldabilityReport{};
     r.assignment_used = options.use_assignment;
     r.tolerances = options.tolerances;
+    r.coordinate_precision = precision;
     r.model = FoldabilityModel::kNone;
     r.model_name = "none";
     r.reason = std::string("no solver applies to this pattern: ") + e.what();

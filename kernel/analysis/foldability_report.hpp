@@ -73,6 +73,9 @@ struct FoldabilityOptions {
   bool explore_branches = true; // run the branch explorer where it applies (general model)
   Tolerances tolerances = kDefaultTolerances;
   int family_samples = 64;      // multiplier model: points sampled along each family component
+  // How far each coordinate may lie from the true one (the file's length unit; 0: exact data);
+  // nullopt: read off the input (coordinate_precision.hpp). `check --tolerance`.
+  std::optional<double> coordinate_tolerance;
   ProgressSink progress;        // the stage running, and the general model's and explorer's units of work
 };
 
@@ -141,6 +144,9 @@ struct FoldabilityReport {
     std::string exact_data_verdict;     // what the exact data gives
   };
   std::optional<InputPrecision> input_precision;
+  // The precision the verdict assumed of the coordinates, whatever its source
+  // (describe_input_precision): stated, an SVG's drawn points, the digits, or exact.
+  std::string coordinate_precision;
   // Given-state model (sheets with holes).
   int holes_closed = 0;
   double reference_residual = 0.0;

@@ -289,7 +289,8 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     if (candidates.empty()) {
       for (std::size_t a = 0; a < out.evidence.size(); ++a) {
         if (best_x[a].size() != n) continue;
-        const RoundingResidualCheck rc = rounding_explains_residual(pattern, topology, sys.edges_from_unknowns(best_x[a]));
+        const RoundingResidualCheck rc = rounding_explains_residual(pattern, topology, sys.edges_from_unknowns(best_x[a]),
+                                                                   opt.coordinate_tolerance);
         out.evidence[a].explained_by_rounding = rc.explained;
         out.evidence[a].rounding_ratio = rc.worst_ratio;
       }

@@ -102,6 +102,9 @@ struct GeneralVerdictOptions {
   // driving creases flat.
   int norm_search_starts = 2;
   int norm_search_iterations = 80;
+  // The user's bound on each coordinate (input_precision; nullopt: read off the digits),
+  // for the rounding test of step 5.
+  std::optional<double> coordinate_tolerance;
   // DOF-1 tracing: steps of at most 0.1 rad in any crease (a fixed arclength of 0.25 took
   // ~5,000 points, 23 s, on a 50 x 50 Miura); on small patterns this is about the old step.
   ContinuationOptions continuation = [] {

@@ -31,9 +31,10 @@ std::vector<std::vector<double>> sector_rounding_bounds(const CreasePattern& p, 
   return out;
 }
 
-RoundingResidualCheck rounding_explains_residual(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& rho) {
+RoundingResidualCheck rounding_explains_residual(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& rho,
+                                                 std::optional<double> stated_tolerance) {
   RoundingResidualCheck out;
-  const CoordinatePrecision precision = coordinate_precision(p);
+  const CoordinatePrecision precision = input_precision(p, stated_tolerance);
   const std::vector<std::vector<double>> bounds = sector_rounding_bounds(p, t, precision);
   for (std::size_t k = 0; k < t.interior_vertices.size(); ++k) {
     const int v = t.interior_vertices[k];

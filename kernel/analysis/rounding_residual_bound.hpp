@@ -34,8 +34,10 @@ struct RoundingResidualCheck {
   int worst_vertex = -1;       // pattern vertex of worst_ratio
 };
 
-// Inputs: the pattern, its topology, per-edge fold angles rho (radians) of a state.
+// Inputs: the pattern, its topology, per-edge fold angles rho (radians) of a state;
+// stated_tolerance: the user's bound on each coordinate (input_precision; nullopt: the digits).
 RoundingResidualCheck rounding_explains_residual(const CreasePattern& pattern, const Topology& topology,
-                                                 const Eigen::VectorXd& rho);
+                                                 const Eigen::VectorXd& rho,
+                                                 std::optional<double> stated_tolerance = std::nullopt);
 
 }  // namespace rigidfold

@@ -30,9 +30,10 @@ void sector_jacobian(const std::vector<double>& sectors, const std::vector<doubl
 
 }  // namespace
 
-RoundingWitness rounding_witness(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& given) {
+RoundingWitness rounding_witness(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& given,
+                                 std::optional<double> stated_tolerance) {
   RoundingWitness w;
-  w.precision = coordinate_precision(p);
+  w.precision = input_precision(p, stated_tolerance);
   w.witness = t;
   w.explained = true;
   const std::vector<std::vector<double>> bounds = sector_rounding_bounds(p, t, w.precision);

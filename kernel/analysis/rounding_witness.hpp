@@ -48,8 +48,10 @@ struct RoundingWitness {
 };
 
 // Inputs: a validated pattern, its topology, and the given state's per-edge fold angles
-// (reference_fold_angles, radians).
+// (reference_fold_angles, radians); stated_tolerance: the user's bound on each coordinate
+// (input_precision; nullopt: read off the digits).
 RoundingWitness rounding_witness(const CreasePattern& pattern, const Topology& topology,
-                                 const Eigen::VectorXd& given_fold_angles);
+                                 const Eigen::VectorXd& given_fold_angles,
+                                 std::optional<double> stated_tolerance = std::nullopt);
 
 }  // namespace rigidfold

@@ -85,9 +85,42 @@ CoordinatePrecision coordinate_precision(const CreasePattern& p) {
   return out;
 }
 
+CoordinatePrecision stated_precision(const CreasePattern& p, double tolerance) {
+  CoordinatePrecision out;
+  out.stated = true;
+  out.rounded = tolerance > 0;
+  const double stored = tolerance / std::ldexp(1.0, p.length_exponent);
+  out.vertex_rounding.assign(p.vertices.size(), stored);
+  out.max_rounding = p.vertices.empty() ? 0.0 : stored;
+  return out;
+}
+
+CoordinatePrecision input_precision(const CreasePattern& p, std::optional<double> stated_tolerance) {
+  return stated_tolerance ? stated_precision(p, *stated_tolerance) : coordinate_precision(p);
+}
+
+std::string describe_input_precision(const CreasePattern& p, std::optional<double> stated_tolerance) {
+  char bound[32];
+  if (stated_tolerance) {
+    if (*stated_tolerance == 0) return "coordinates taken as exact (--tolerance exact)";
+    std::snprintf(bound, sizeof bound, "%.3g", *stated_tolerance);
+    return std::string("coordinates within ") + bound + " of the true ones (stated with --tolerance)";
+  }
+  if (p.position_bounds.covers(p.num_vertices())) {
+    std::snprintf(bound, sizeof bound, "%.3g", p.position_bounds.max_half_width * std::ldexp(1.0, p.length_exponent));
+    return std::string("vertices within the box of the points drawn for them (half-width <= ") + bound + ")";
+  }
+  const CoordinatePrecision read = coordinate_precision(p);
+  if (!read.rounded) return "full-precision coordinates, taken as exact";
+  return describe_precision(read);
+}
+
 std::string describe_precision(const CoordinatePrecision& precision) {
   char bound[32];
   std::snprintf(bound, sizeof bound, "%.3g", precision.max_rounding);
+  if (precision.stated)
+    return precision.rounded ? std::string("coordinates within ") + bound + " (stated with --tolerance)"
+                             : std::string("coordinates taken as exact (--tolerance exact)");
   if (precision.single_precision) return std::string("float32 coordinates (rounding <= ") + bound + ")";
   return "coordinates written with " + std::to_string(precision.decimal_places) + " decimals (rounding <= " + bound + ")";
 }

@@ -24,7 +24,12 @@
 // taken is half an ulp at the sheet's scale, u = 2^-24 max|c| over the file, for every
 // coordinate (plus the two double ulps).
 //
+// Stated precision (`--tolerance U`): the user says how far each coordinate may lie from the
+// true one, U in the file's length unit, overriding what the digits say; U = 0 ("exact")
+// judges the numbers as they are, with no "within the input's precision" verdicts.
+//
 // Units: the pattern's length unit (coordinates as stored in CreasePattern::vertices).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +46,7 @@ struct CoordinatePrecision {
   // (a full double needs 16-17 digits for most values).
   bool rounded = false;
   bool single_precision = false;  // every coordinate is a float32 value (see above); rounded too
+  bool stated = false;            // the bound was given by the user (stated_precision), not read
 };
 
 // One phrase for reports: "coordinates written with 6 decimals (rounding <= 5e-07)" or
@@ -48,5 +54,17 @@ struct CoordinatePrecision {
 std::string describe_precision(const CoordinatePrecision& precision);
 
 CoordinatePrecision coordinate_precision(const CreasePattern& pattern);
+
+// The user's bound: every coordinate within `tolerance` (the file's length unit, >= 0) of the
+// true one; rounded = tolerance > 0.
+CoordinatePrecision stated_precision(const CreasePattern& pattern, double tolerance);
+
+// The precision every verdict uses: stated_precision when a tolerance is given, otherwise
+// coordinate_precision (read off the digits).
+CoordinatePrecision input_precision(const CreasePattern& pattern, std::optional<double> stated_tolerance);
+
+// One phrase for the precision a verdict used, whatever its source: the stated bound, an
+// SVG's drawn points (CreasePattern::position_bounds), the digits, or exact data.
+std::string describe_input_precision(const CreasePattern& pattern, std::optional<double> stated_tolerance);
 
 }  // namespace rigidfold

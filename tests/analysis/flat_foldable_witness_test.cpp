@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "data/generators/miura.hpp"
 #include "data/generators/square_twist.hpp"
@@ -141,6 +142,45 @@ TEST(FlatFoldableWitness, RoundedMiuraWithCyclesFoldsOnceTheLoopGainsAreClosedTo
   expect_witness_within(p, second->witness, 0.5e-3, "6-row Miura, 3 decimals");
   const FoldabilityVerdict on_second = verdict_with_assignment(second->witness, build_topology(second->witness), vo);
   EXPECT_EQ(on_second.verdict, Verdict::kRigidlyFoldable) << on_second.reason;
+}
+
+// `check --tolerance` (FoldabilityOptions::coordinate_tolerance): one Miura written at 17
+// digits and rounded to 6, 4 and 3 decimals. Read off the digits, the rounded files fold
+// within their precision; stated as exact, no rounded file gets that verdict (the numbers are
+// judged as they are); a stated bound 100x the rounding still explains the defects, one
+// 1/100 of it does not. The 17-digit file folds, exactly, under every setting.
+TEST(FlatFoldableWitness, StatedToleranceOverridesWhatTheDigitsSay) {
+  for (const int decimals : {17, 6, 4, 3}) {
+    const std::string where = std::to_string(decimals) + " decimals";
+    const CreasePattern p = rounded_miura(4, 100.0, decimals);
+    const Topology t = build_topology(p);
+    const double half_unit = 0.5 * std::pow(10.0, -decimals);
+    auto check = [&](std::optional<double> tolerance) {
+      FoldabilityOptions o;
+      o.coordinate_tolerance = tolerance;
+      return check_foldability(p, t, o);
+    };
+    const FoldabilityReport read = check(std::nullopt), exact = check(0.0);
+    EXPECT_EQ(exact.coordinate_precision, "coordinates taken as exact (--tolerance exact)") << where;
+    EXPECT_FALSE(exact.input_precision.has_value()) << where;
+    if (decimals == 17) {
+      EXPECT_EQ(read.verdict, FoldabilityClass::kFoldable) << where << ": " << read.reason;
+      EXPECT_EQ(exact.verdict, FoldabilityClass::kFoldable) << where << ": " << exact.reason;
+      EXPECT_EQ(read.coordinate_precision, "full-precision coordinates, taken as exact") << where;
+      continue;
+    }
+    ASSERT_GT(max_kawasaki(t), 1e-9) << where;
+    EXPECT_EQ(read.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": " << read.reason;
+    EXPECT_NE(read.coordinate_precision.find("written with " + std::to_string(decimals) + " decimals"), std::string::npos)
+        << where << ": " << read.coordinate_precision;
+    EXPECT_NE(exact.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": " << exact.reason;
+    EXPECT_NE(exact.verdict, FoldabilityClass::kFoldable) << where << ": " << exact.reason;
+    const FoldabilityReport loose = check(100 * half_unit), tight = check(0.01 * half_unit);
+    EXPECT_EQ(loose.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": " << loose.reason;
+    EXPECT_NE(loose.coordinate_precision.find("stated with --tolerance"), std::string::npos) << where;
+    EXPECT_NE(tight.verdict, FoldabilityClass::kFoldableWithinTolerance) << where << ": " << tight.reason;
+    EXPECT_NE(tight.verdict, FoldabilityClass::kFoldable) << where << ": " << tight.reason;
+  }
 }
 
 TEST(FlatFoldableWitness, RoundedSquareTwistIsUndecidedNeverRigid) {

@@ -99,6 +99,26 @@ TEST(CheckCli, BothModelsAgreeOnMiuraAndSquareTwists) {
 
 TEST(CheckCli, BadInputExitsTwo) {
   EXPECT_EQ(test::run_command(test::cli() + " check /nonexistent.fold --json").status, 2);
+  const std::string miura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_4x4_alpha60.fold";
+  for (const std::string bad : {"-1", "nan", "inf", "1e-3x", "", "exactly"}) {
+    const test::CommandResult r = test::run_command(test::cli() + " check " + miura + " --tolerance '" + bad + "'");
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("--tolerance"), std::string::npos) << bad << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << bad;
+  }
+}
+
+// --tolerance: the precision the verdict assumed is stated, whatever its source.
+TEST(CheckCli, StatesThePrecisionItAssumed) {
+  const std::string miura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_4x4_alpha60.fold";
+  const auto precision = [&](const std::string& flags) {
+    const test::CommandResult r = test::run_command(test::cli() + " check --json " + miura + flags);
+    EXPECT_EQ(r.status, 0) << flags << r.err;
+    return nlohmann::json::parse(r.out)["coordinate_precision"].get<std::string>();
+  };
+  EXPECT_EQ(precision(" --tolerance exact"), "coordinates taken as exact (--tolerance exact)");
+  EXPECT_EQ(precision(" --tolerance 0.001"), "coordinates within 0.001 of the true ones (stated with --tolerance)");
+  EXPECT_FALSE(precision("").empty());
 }
 
 // Seed 001 Type 2M through the CLI: every branch from flat and through the interior
