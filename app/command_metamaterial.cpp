@@ -1,13 +1,18 @@
 // rigidfold metamaterial --unit square-twist|element1|element2|element3 [unit parameters]
-//                        [--samples N] [--json] [--plot DIR]
+//                        [--samples N] [--json] [--plot DIR] [--cross-check [--cross-check-steps N]]
 // Seed 003's metamaterial units along their motion from flat to the fold limit
 // (design/metamaterial/metamaterial_table.hpp): dimensions, Poisson's ratios, the height
 // maximum and the ratios' sign changes; every sampled row checked before anything is printed.
 // --plot DIR writes metamaterial.csv, dimensions.svg and poisson.svg through one OutputSet.
+// --cross-check (square twist): the closed forms against the traced tessellation
+// (design/metamaterial/square_twist_cross_check.hpp); its largest differences are reported,
+// and a difference above 1e-9 is "no answer" (exit 3, nothing written or printed).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -15,6 +20,7 @@
 #include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
 #include "design/metamaterial/metamaterial_table.hpp"
+#include "design/metamaterial/square_twist_cross_check.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/output_set.hpp"
@@ -31,6 +37,8 @@ void add_metamaterial_command(CLI::App& app) {
     int samples = 181;
     bool json = false;
     std::string plot;
+    bool cross_check = false;
+    int cross_check_steps = 40;
   };
   auto s = std::make_shared<Args>();
   cmd->add_option("--unit", s->unit,
@@ -48,7 +56,13 @@ void add_metamaterial_command(CLI::App& app) {
   cmd->add_option("--samples", s->samples, "fold angles k 180/(N+1) deg, k = 1..N, N in [3, 100000] (default 181)");
   cmd->add_flag("--json", s->json, "print one JSON object (numbers round-trip exactly)");
   cmd->add_option("--plot", s->plot, "directory to write metamaterial.csv, dimensions.svg and poisson.svg");
-  cmd->callback([s, alpha, beta, oa, ob, oc, ol] {
+  cmd->add_flag("--cross-check", s->cross_check,
+                "square twist: trace the 3x3 T1 tessellation with the general solver and compare its unit cell, "
+                "Poisson's ratios (implicit differentiation along the path) and height maximum with the closed forms "
+                "(<= 1e-9, else exit 3)");
+  auto* ccs = cmd->add_option("--cross-check-steps", s->cross_check_steps,
+                              "traced steps of the cross-check, 10..2000 (default 40)");
+  cmd->callback([s, alpha, beta, oa, ob, oc, ol, ccs] {
     using metamaterial::MetamaterialUnit;
     metamaterial::MetamaterialParams p;
     if (s->unit == "square-twist") p.unit = MetamaterialUnit::kSquareTwist;
@@ -82,7 +96,19 @@ void add_metamaterial_command(CLI::App& app) {
       const double need = s->a * (std::sin(p.square_twist.alpha) - std::cos(p.square_twist.alpha));
       if (!(2 * s->b > need)) throw InputError("--b", "must exceed a (sin alpha - cos alpha) / 2 = " + std::to_string(need / 2) + " so that S > 0 over the motion");
       if (!(2 * s->c > need)) throw InputError("--c", "must exceed a (sin alpha - cos alpha) / 2 = " + std::to_string(need / 2) + " so that L > 0 over the motion");
+      if (ccs->count() > 0 && !s->cross_check) throw InputError("--cross-check-steps", "applies only with --cross-check");
+      if (s->cross_check) {
+        const double least = metamaterial::square_twist_cross_check_min_offset(p.square_twist.alpha, s->a);
+        for (const auto& [flag, v] : {std::pair<const char*, double>{"--b", s->b}, {"--c", s->c}})
+          if (!(v > least * (1 + 1e-9)))
+            throw InputError(flag, std::string("--cross-check traces a tessellation whose pleat creases between twists "
+                                               "need it > -a cos(alpha) = ") + std::to_string(least));
+        if (s->cross_check_steps < 10 || s->cross_check_steps > 2000)
+          throw InputError("--cross-check-steps", "must be between 10 and 2000, got " + std::to_string(s->cross_check_steps));
+      }
     } else {
+      if (s->cross_check) throw InputError("--cross-check", "applies to --unit square-twist (the elements have no traced tessellation here)");
+      if (ccs->count() > 0) throw InputError("--cross-check-steps", "applies to --unit square-twist with --cross-check");
       for (auto* o : {oa, ob, oc})
         if (o->count() > 0) throw InputError(o->get_name(), "applies to --unit square-twist, not to the elements");
       const double alpha_deg = alpha->count() > 0 ? s->alpha_deg : 60.0;
@@ -115,6 +141,13 @@ void add_metamaterial_command(CLI::App& app) {
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
     // Every row below passed its checks in metamaterial_table (NoAnswerError -> exit 3).
     const metamaterial::MetamaterialTable t = metamaterial::metamaterial_table(p);
+    // Checked inside (every difference <= 1e-9, else NoAnswerError -> exit 3, nothing written).
+    std::optional<metamaterial::SquareTwistCrossCheck> cc;
+    if (s->cross_check) {
+      metamaterial::SquareTwistCrossCheckOptions o;
+      o.steps = s->cross_check_steps;
+      cc = metamaterial::square_twist_cross_check(p.square_twist, o);
+    }
     if (!s->plot.empty()) {
       outputs.stage(csv_path, metamaterial::metamaterial_csv(t));
       outputs.stage(dims_path, metamaterial::metamaterial_dimensions_svg(t));
@@ -173,6 +206,43 @@ void add_metamaterial_command(CLI::App& app) {
       rows.push_back(o);
     }
     j["rows"] = rows;
+    if (cc) {
+      nlohmann::ordered_json st = nlohmann::ordered_json::array();
+      for (const auto& q : cc->stationary)
+        st.push_back({{"kind", q.maximum ? "maximum" : "minimum"},
+                      {"theta_deg_traced", to_degrees(q.theta_traced)},
+                      {"theta_deg_closed", to_degrees(q.theta_closed)},
+                      {"height_traced", q.height_traced},
+                      {"height_closed", q.height_closed},
+                      {"nu_HL_traced", q.nu_HL_at},
+                      {"nu_HL_before", q.nu_HL_before},
+                      {"nu_HL_after", q.nu_HL_after}});
+      j["cross_check"] = {
+          {"sheet", "3x3 square-twist tessellation, layout type3-rows (T1), traced by the general loop-closure solver"},
+          {"twists_per_side", cc->twists_per_side},
+          {"creases", cc->creases},
+          {"traced_steps", cc->traced_steps},
+          {"compared_steps", cc->compared_steps},
+          {"theta_deg_range", {cc->theta_range_deg[0], cc->theta_range_deg[1]}},
+          {"tolerance", metamaterial::kCrossCheckTolerance},
+          {"max_closure_residual", cc->max_residual},
+          {"max_null_singular_value", cc->max_null_singular},
+          {"min_next_singular_value", cc->min_next_singular},
+          {"max_geometry_defect", cc->max_geometry_defect},
+          {"max_phi_difference_rad", cc->max_phi_difference},
+          {"max_dimension_difference", cc->max_dimension_difference},
+          {"max_derivative_difference", cc->max_derivative_difference},
+          {"max_ratio_difference", cc->max_ratio_difference},
+          {"nu_SL_negative", cc->nu_SL_negative},
+          {"stationary_points", st},
+          {"max_stationary_theta_difference_rad", cc->max_stationary_theta_difference},
+          {"max_stationary_height_difference", cc->max_stationary_height_difference},
+          {"height_maximum", {{"theta_deg_traced", to_degrees(cc->height_maximum_theta_traced)},
+                              {"theta_deg_closed", to_degrees(cc->height_maximum_theta_closed)},
+                              {"height_traced", cc->height_maximum_traced},
+                              {"height_closed", cc->height_maximum_closed}}},
+          {"seconds", cc->seconds}};
+    }
     if (s->json) {
       std::cout << document_text(j) << "\n";
       return;
@@ -206,6 +276,27 @@ void add_metamaterial_command(CLI::App& app) {
     std::snprintf(line, sizeof line, "  checks: constraint residual <= %.1e, derivative vs finite difference <= %.1e (relative)\n",
                   t.max_constraint_residual, t.max_derivative_error);
     std::cout << line;
+    if (cc) {
+      std::snprintf(line, sizeof line,
+                    "  cross-check (3x3 T1 tessellation, general solver, %d steps, theta %.4g..%.4g deg): residual <= %.1e, "
+                    "geometry defect <= %.1e\n",
+                    cc->traced_steps, cc->theta_range_deg[0], cc->theta_range_deg[1], cc->max_residual, cc->max_geometry_defect);
+      std::cout << line;
+      std::snprintf(line, sizeof line,
+                    "    closed form vs traced: phi %.1e rad, L S H %.1e, d/dtheta %.1e (rel), nu_SL nu_HL %.1e (rel); tolerance %.0e\n",
+                    cc->max_phi_difference, cc->max_dimension_difference, cc->max_derivative_difference,
+                    cc->max_ratio_difference, metamaterial::kCrossCheckTolerance);
+      std::cout << line;
+      for (const auto& q : cc->stationary) {
+        std::snprintf(line, sizeof line,
+                      "    H %s at theta %.12g deg traced (closed %.12g), H %.12g (closed %.12g); nu_HL %.3g -> %.3g\n",
+                      q.maximum ? "maximum" : "minimum", to_degrees(q.theta_traced), to_degrees(q.theta_closed),
+                      q.height_traced, q.height_closed, q.nu_HL_before, q.nu_HL_after);
+        std::cout << line;
+      }
+      std::snprintf(line, sizeof line, "    %.2f s\n", cc->seconds);
+      std::cout << line;
+    }
     if (!s->plot.empty()) std::cout << "  wrote " << csv_path << ", " << dims_path << ", " << ratios_path << "\n";
   });
 }

@@ -32,6 +32,9 @@ void check_params(const SquareTwistTessellationParams& p) {
   require(std::isfinite(p.spacing) && p.spacing > reach * (1 + 1e-9), "spacing",
           "twist centres must be more than side * (sin t + cos t) = " + std::to_string(reach) +
               " apart, so that every crease between twists has positive length; got " + std::to_string(p.spacing));
+  require(std::isfinite(p.spacing_y) && (p.spacing_y == 0 || p.spacing_y > reach * (1 + 1e-9)), "spacing_y",
+          "twist centres along y must be more than side * (sin t + cos t) = " + std::to_string(reach) +
+              " apart (or 0: the same as spacing); got " + std::to_string(p.spacing_y));
 }
 
 }  // namespace
@@ -94,6 +97,7 @@ CreasePattern square_twist_tessellation(const SquareTwistTessellationParams& par
               "twist " + std::to_string(w) + " side " + std::to_string(k) + " must be M or V");
 
   const double t = params.twist, L = params.spacing;
+  const double Ly = params.spacing_y > 0 ? params.spacing_y : params.spacing;
   const double r = params.side / std::sqrt(2.0);
   const double phi0 = t - 3 * kPi / 4;  // as square_twist: A's o_b along +x (before mirroring)
   auto mirrored = [](int i, int j) { return (i + j) % 2 == 1; };
@@ -118,7 +122,7 @@ CreasePattern square_twist_tessellation(const SquareTwistTessellationParams& par
           da.x() = -da.x();
           db.x() = -db.x();
         }
-        pos.push_back(x + Eigen::Vector2d(i * L, j * L));
+        pos.push_back(x + Eigen::Vector2d(i * L, j * Ly));
         dir.push_back({da, db});
       }
   for (const auto& x : pos) p.vertices.emplace_back(x.x(), x.y(), 0.0);
@@ -144,8 +148,8 @@ CreasePattern square_twist_tessellation(const SquareTwistTessellationParams& par
 
   // Outer creases: to the twist vertex of the neighbour in that direction whose outer crease
   // points back along the same line, or to the sheet's boundary (the rectangle of the twists'
-  // L x L cells). Boundary points are numbered after all creases exist.
-  const double x_lo = -L / 2, x_hi = (m - 0.5) * L, y_lo = -L / 2, y_hi = (n - 0.5) * L;
+  // L x Ly cells). Boundary points are numbered after all creases exist.
+  const double x_lo = -L / 2, x_hi = (m - 0.5) * L, y_lo = -Ly / 2, y_hi = (n - 0.5) * Ly;
   struct BoundaryPoint {
     double walk;  // arc length along the boundary, counter-clockwise from the lower-left corner
     Eigen::Vector2d x;
@@ -227,6 +231,7 @@ CreasePattern square_twist_tessellation(const SquareTwistTessellationParams& par
   g["twist_deg"] = deg_rounded(t);
   g["side"] = params.side;
   g["spacing"] = params.spacing;
+  if (params.spacing_y > 0) g["spacing_y"] = params.spacing_y;
   g["sides"] = letters;
   g["sides_order"] = "per twist row by row (twist (i, j) = j * cols + i): AB BC CD DA";
   char title[160];

@@ -6,7 +6,7 @@
 //
 // Geometry (seen from +z; lengths in the unit of `side` and `spacing`; twist t in radians).
 //   - Twist (i, j), i = 0..cols-1 along x, j = 0..rows-1 along y, is centred at
-//     (i, j) * spacing. Twists with i + j even are the square twist of square_twist.hpp
+//     (i spacing, j spacing_y) (spacing_y = spacing unless given: rectangular cells). Twists with i + j even are the square twist of square_twist.hpp
 //     (central square A B C D, side `side`, A the lowest vertex, outer creases axis-parallel,
 //     A's o_b along +x); twists with i + j odd are its mirror image in the vertical line
 //     through their centre (A B C D then run clockwise). Mirroring the neighbours is what
@@ -15,7 +15,7 @@
 //   - Each outer crease runs to the vertex of the neighbouring twist on the same line (a
 //     pleat crease), or to the sheet's edge. Crease o_b meets the neighbour's o_b and o_a
 //     meets o_a. The sheet is the rectangle of the twists' spacing x spacing cells,
-//     [-spacing/2, (cols - 1/2) spacing] x [-spacing/2, (rows - 1/2) spacing].
+//     [-spacing/2, (cols - 1/2) spacing] x [-spacing_y/2, (rows - 1/2) spacing_y].
 //   - Panels: the central squares; an isosceles trapezoid per pleat between two twists
 //     (a quadrilateral cut by the sheet's edge for the outward pleats); one rectangle per
 //     grid corner between four twists (cut by the edge on the border); every vertex has
@@ -84,6 +84,7 @@ struct SquareTwistTessellationParams {
   double twist = std::numbers::pi / 6;              // t, radians, in (0, pi/2)
   double side = 1.0;                                // side of every central square (> 0)
   double spacing = 2.5;                             // twist centre to centre; > side (sin t + cos t)
+  double spacing_y = 0.0;                           // along y when > 0 (same bound); 0: `spacing`
   SquareTwistTessellationLayout layout = SquareTwistTessellationLayout::Type4;
 };
 
@@ -99,7 +100,7 @@ std::array<Assignment, 4> square_twist_tessellation_twist_sides(SquareTwistTesse
 std::vector<std::array<Assignment, 4>> square_twist_tessellation_sides(const SquareTwistTessellationParams& params);
 
 // Validated pattern with params.layout. Throws InputError (place "rows", "cols", "twist",
-// "side" or "spacing").
+// "side", "spacing" or "spacing_y").
 CreasePattern square_twist_tessellation(const SquareTwistTessellationParams& params);
 // Validated pattern with explicit side letters per twist (rows * cols entries, each M or V;
 // params.layout is ignored). Throws InputError("sides", ...) for a wrong count, a letter
