@@ -1,12 +1,31 @@
-// rigidfold waterbomb --n N --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
-//                    [--curve FILE.csv [--samples K]] [--target-switching-force F]
+// rigidfold waterbomb --n N [--split-deg B] --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
+//                    [--curve FILE.csv] [--plot DIR] [--samples K] [--target-switching-force F]
 // Bistability of the symmetric waterbomb base (seed 004): every equilibrium of the spring
 // energy along the 1-DOF symmetric path, each checked (loop closure, dV/dtheta = 0, and
 // stationarity and stability on the unrestricted 2n-crease problem) before it is printed.
 // --curve writes the energy and force-deflection curves (design/waterbomb/waterbomb_curve.hpp):
 // every sample checked against the general model, or nothing is written (exit 3).
+// --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
+// every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
+// in the split fold's contact limits. No switching force or design for split folds yet.
+// --plot DIR: DIR/waterbomb.csv (the --curve table), DIR/waterbomb.json (the --json document)
+// and DIR/waterbomb.png (energy and force against apex height, drawn by /usr/bin/python3
+// python/plot_waterbomb.py in a private temporary directory); all three staged with the other
+// outputs, so a failed command writes none of them.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -15,6 +34,7 @@
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
+#include "design/waterbomb/split_fold_bistability.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
 #include "design/waterbomb/waterbomb_curve.hpp"
 #include "design/waterbomb/waterbomb_switching.hpp"
@@ -32,6 +52,87 @@ nlohmann::ordered_json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
+std::string curve_csv(const std::vector<waterbomb::CurveSample>& samples) {
+  std::string csv =
+      "theta_deg,gamma_m_deg,gamma_v_deg,energy,height,deflection,force,force_closed_form,min_reduced_hessian_eigenvalue,stable\n";
+  for (const auto& s : samples)
+    csv += round_trip_text(to_degrees(s.theta)) + "," + round_trip_text(to_degrees(s.angles.gamma_m)) + "," +
+           round_trip_text(to_degrees(s.angles.gamma_v)) + "," + round_trip_text(s.energy) + "," +
+           round_trip_text(s.height) + "," + round_trip_text(s.deflection) + "," + round_trip_text(s.force) + "," +
+           round_trip_text(s.force_closed_form) + "," + round_trip_text(s.min_eigenvalue) + "," +
+           (s.stable ? "1" : "0") + "\n";
+  return csv;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// python/plot_waterbomb.py of this source tree (the build records the tree's absolute path
+// in __FILE__).
+std::string plot_script() {
+  std::string here = __FILE__;
+  const std::string tail = "app/command_waterbomb.cpp";
+  if (here.size() < tail.size() || here.compare(here.size() - tail.size(), tail.size(), tail) != 0)
+    throw std::runtime_error("--plot: cannot locate python/plot_waterbomb.py (this binary was built from " + here + ")");
+  std::string script = here.substr(0, here.size() - tail.size());
+  script += "python/plot_waterbomb.py";
+  if (::access(script.c_str(), R_OK) != 0) throw std::runtime_error("--plot: " + script + " is not readable");
+  return script;
+}
+
+// Draws the PNG of a curve table and its summary in a private temporary directory (the
+// figure names its inputs as waterbomb.csv and waterbomb.json, the files written beside it)
+// and returns its bytes. Throws std::runtime_error when Python or the script fails (an
+// installation problem, not bad input: exit 1), with the script's message.
+std::string draw_plot(const std::string& csv, const std::string& summary_json) {
+  const std::string script = plot_script();
+  char name[] = "/tmp/rigidfold_waterbomb_plot_XXXXXX";
+  if (!::mkdtemp(name)) throw std::runtime_error("--plot: cannot create a temporary directory");
+  const std::string dir = name;
+  struct Cleanup {
+    std::string dir;
+    ~Cleanup() {
+      for (const char* f : {"waterbomb.csv", "waterbomb.json", "waterbomb.png", "plot.log"})
+        ::unlink((dir + "/" + f).c_str());
+      ::rmdir(dir.c_str());
+    }
+  } cleanup{dir};
+  for (const auto& [file, text] : {std::pair<std::string, const std::string*>{"waterbomb.csv", &csv},
+                                   std::pair<std::string, const std::string*>{"waterbomb.json", &summary_json}}) {
+    std::ofstream out(dir + "/" + file, std::ios::binary);
+    out << *text;
+    if (!out) throw std::runtime_error("--plot: cannot write the temporary " + file);
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  const std::string log = dir + "/plot.log";
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  std::vector<std::string> args{"/usr/bin/python3", script, "waterbomb.csv", "waterbomb.json", "--out", "waterbomb.png"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), ::environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error("--plot: cannot start /usr/bin/python3 (" + std::string(std::strerror(spawned)) + ")");
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error("--plot: lost the plotting process");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("--plot: /usr/bin/python3 " + script + " failed (status " +
+                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "): " + file_bytes(log));
+  std::string png = file_bytes(dir + "/waterbomb.png");
+  if (png.size() < 8 || png.compare(1, 3, "PNG") != 0) throw std::runtime_error("--plot: the script wrote no PNG");
+  return png;
+}
+
 }  // namespace
 
 void add_waterbomb_command(CLI::App& app) {
@@ -40,7 +141,8 @@ void add_waterbomb_command(CLI::App& app) {
     int n = 0;
     double theta0_deg = 0, k_ratio = 1, k_m = 1, k_v = 1;
     bool json = false;
-    std::string curve;
+    std::string curve, plot;
+    double split_deg = 0;
     int samples = 181;
     double target_switching_force = 0;
   };
@@ -58,15 +160,36 @@ void add_waterbomb_command(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->add_option("--curve", a->curve,
                   "write energy and force-deflection along the symmetric path (CSV; each sample checked on the general model)");
-  auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve over (0, theta_limit), 3..2001 (default 181)");
+  auto* split = cmd->add_option("--split-deg", a->split_deg,
+                                 "split-fold base: sector b of each split-fold facet, degrees in (0, 180/n)");
+  cmd->add_option("--plot", a->plot,
+                  "directory to write waterbomb.csv, waterbomb.json and waterbomb.png (energy and force against apex height)");
+  auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve / --plot over the valid range, 3..2001 (default 181)");
   auto* target = cmd->add_option("--target-switching-force", a->target_switching_force,
                                   "design: the mountain stiffness k_m (k_v as given, default 1) whose switching force is this (> 0; radius-1 base)");
-  cmd->callback([a, ratio, samples, target] {
+  cmd->callback([a, ratio, samples, target, split] {
     if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
-    const double limit_deg = 180.0 - 180.0 / a->n;
-    if (!std::isfinite(a->theta0_deg) || a->theta0_deg < 0.0 || a->theta0_deg > limit_deg)
-      throw InputError("--theta0-deg", "must be in [0, " + std::to_string(limit_deg) + "] degrees for n = " +
-                                           std::to_string(a->n));
+    const bool split_fold = split->count() > 0;
+    double limit_deg = 180.0 - 180.0 / a->n, lower_deg = 0.0;
+    double b = 0.0;
+    waterbomb::SplitFoldRange split_range;
+    if (split_fold) {
+      const double b_max_deg = 180.0 / a->n;
+      if (!std::isfinite(a->split_deg) || !(a->split_deg > 0.0) || !(a->split_deg < b_max_deg))
+        throw InputError("--split-deg", "must lie in (0, " + round_trip_text(b_max_deg) + ") degrees (180/n) for n = " +
+                                            std::to_string(a->n) + ", got " + round_trip_text(a->split_deg));
+      b = to_radians(a->split_deg);
+      if (!(b < kPi / a->n)) throw InputError("--split-deg", "rounds to 180/n degrees or more");
+      split_range = waterbomb::split_fold_range(a->n, b);
+      lower_deg = to_degrees(split_range.theta_min);
+      limit_deg = to_degrees(split_range.theta_max);
+    }
+    if (!std::isfinite(a->theta0_deg) || a->theta0_deg < lower_deg || a->theta0_deg > limit_deg)
+      throw InputError("--theta0-deg", "must be in [" + round_trip_text(lower_deg) + ", " + round_trip_text(limit_deg) +
+                                           "] degrees for n = " + std::to_string(a->n) +
+                                           (split_fold ? " and --split-deg " + round_trip_text(a->split_deg) +
+                                                             " (the split fold's valid range)"
+                                                       : std::string()));
     double k_m = a->k_m, k_v = a->k_v;
     if (ratio->count() > 0) {
       if (!std::isfinite(a->k_ratio) || a->k_ratio < 0.0) throw InputError("--k-ratio", "must be a finite number >= 0");
@@ -77,25 +200,65 @@ void add_waterbomb_command(CLI::App& app) {
     if (!std::isfinite(k_v) || k_v < 0.0) throw InputError("--k-v", "must be a finite number >= 0");
     if (k_m == 0.0 && k_v == 0.0) throw InputError("--k-m", "at least one stiffness must be > 0");
     // Clamp against the last-bit rounding of the degree conversion at the upper limit.
-    const double theta0 = std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
-    if (samples->count() > 0 && a->curve.empty()) throw InputError("--samples", "needs --curve");
+    const double theta0 = split_fold ? std::min(std::max(to_radians(a->theta0_deg), split_range.theta_min), split_range.theta_max)
+                                     : std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
+    if (samples->count() > 0 && a->curve.empty() && a->plot.empty()) throw InputError("--samples", "needs --curve or --plot");
+    if (split_fold && target->count() > 0)
+      throw InputError("--split-deg", "--target-switching-force is not available for split folds yet");
     if (a->samples < 3 || a->samples > 2001)
       throw InputError("--samples", "must be between 3 and 2001, got " + std::to_string(a->samples));
     OutputSet outputs;
+    std::string plot_csv, plot_json, plot_png;
+    if (!a->plot.empty()) {
+      outputs.add_output_directory("--plot", a->plot);
+      const std::string dir = a->plot.back() == '/' ? a->plot : a->plot + "/";
+      plot_csv = dir + "waterbomb.csv";
+      plot_json = dir + "waterbomb.json";
+      plot_png = dir + "waterbomb.png";
+      for (const auto* path : {&plot_csv, &plot_json, &plot_png}) outputs.add_output("--plot", *path);
+    }
     if (!a->curve.empty()) outputs.add_output("--curve", a->curve);
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
-    // Every number below passed its check in waterbomb_bistability (NoAnswerError -> exit 3).
-    const waterbomb::WaterbombBistability r = waterbomb::waterbomb_bistability(a->n, theta0, k_m, k_v);
+    // Every number below passed its check in waterbomb_bistability or split_fold_bistability
+    // (NoAnswerError -> exit 3).
+    std::vector<waterbomb::CheckedEquilibrium> equilibria;
+    std::vector<waterbomb::WaterbombBistability::Barrier> path_barriers;
+    waterbomb::FoldPair rest;
+    nlohmann::ordered_json unconfirmed = nlohmann::ordered_json::array();
+    double support_distance = std::cos(kPi / a->n);
+    if (split_fold) {
+      const waterbomb::SplitFoldBistability r = waterbomb::split_fold_bistability(a->n, b, theta0, k_m, k_v);
+      equilibria = r.equilibria;
+      path_barriers = r.symmetric_path_barriers();
+      rest = r.springs.rest;
+      support_distance = r.support_distance;
+      for (const auto& u : r.unconfirmed_near_contact)
+        unconfirmed.push_back({{"kind", waterbomb::to_string(u.kind)}, {"theta_from_deg", to_degrees(u.theta_lo)},
+                               {"theta_to_deg", to_degrees(u.theta_hi)}, {"why", u.why}});
+    } else {
+      const waterbomb::WaterbombBistability r = waterbomb::waterbomb_bistability(a->n, theta0, k_m, k_v);
+      equilibria = r.equilibria;
+      path_barriers = r.symmetric_path_barriers();
+      rest = r.springs.rest;
+    }
 
     nlohmann::ordered_json j;
     j["n"] = a->n;
     j["theta0_deg"] = a->theta0_deg;
     j["k_m"] = k_m;
     j["k_v"] = k_v;
-    j["rest"] = {{"gamma_m_deg", to_degrees(r.springs.rest.gamma_m)}, {"gamma_v_deg", to_degrees(r.springs.rest.gamma_v)}};
+    if (split_fold) j["split_deg"] = a->split_deg;
+    j["rest"] = {{"gamma_m_deg", to_degrees(rest.gamma_m)}, {"gamma_v_deg", to_degrees(rest.gamma_v)}};
+    if (split_fold) {
+      j["theta_min_deg"] = lower_deg;
+      j["support_distance"] = support_distance;
+      // false: the printed forms (seed eqs 3.13-3.30) break down there before facets touch.
+      j["theta_min_is_contact"] = split_range.lower_is_contact;
+      j["theta_limit_is_contact"] = split_range.upper_is_contact;  // vertex to the supports along a valley split-facet centreline (unit creases)
+    }
     j["theta_limit_deg"] = limit_deg;
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const auto& e : r.equilibria) {
+    for (const auto& e : equilibria) {
       nlohmann::ordered_json s;
       s["kind"] = waterbomb::to_string(e.path.kind);
       s["theta_deg"] = to_degrees(e.path.theta);
@@ -115,15 +278,16 @@ void add_waterbomb_command(CLI::App& app) {
       list.push_back(s);
     }
     j["equilibria"] = list;
+    if (split_fold) j["unconfirmed_near_contact_limit"] = unconfirmed;
     // Barriers along the symmetric path only: over the flat cusp from each stable state. An
     // unsymmetric path between the states may cross lower (not searched yet).
     nlohmann::ordered_json barriers = nlohmann::ordered_json::array();
-    for (const auto& b : r.symmetric_path_barriers())
-      barriers.push_back({{"from_theta_deg", to_degrees(b.from_theta)}, {"symmetric_path_barrier", b.height}});
+    for (const auto& bar : path_barriers)
+      barriers.push_back({{"from_theta_deg", to_degrees(bar.from_theta)}, {"symmetric_path_barrier", bar.height}});
     j["barriers"] = barriers;
     // Switching force under force control (rest before flat only), on the radius-1 base.
     const double valley_length = std::cos(kPi / a->n);
-    if (theta0 < kPi / 2) {
+    if (!split_fold && theta0 < kPi / 2) {
       const auto sw = waterbomb::switching_force_checked(a->n, theta0, k_m, k_v);
       j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat},
                               {"valley_crease_length", valley_length}, {"general_model_gap", sw.general_gap}};
@@ -137,22 +301,33 @@ void add_waterbomb_command(CLI::App& app) {
       (void)waterbomb::switching_force_checked(a->n, theta0, k_m_design, k_v);  // the design, confirmed on the general model
       j["design"] = {{"target_switching_force", a->target_switching_force}, {"k_m", k_m_design}, {"k_v", k_v}};
     }
-    if (!a->curve.empty()) {
-      const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
-      for (const auto& s : c.samples)
+    if (!a->curve.empty() || !a->plot.empty()) {
+      std::vector<waterbomb::CurveSample> curve;
+      int unchecked = 0;
+      if (split_fold) {
+        const waterbomb::SplitFoldCurve c = waterbomb::split_fold_curve(a->n, b, theta0, k_m, k_v, a->samples);
+        curve = c.samples;
+        unchecked = c.unchecked;
+      } else {
+        const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
+        curve = c.samples;
+        unchecked = c.unchecked;
+      }
+      const char* flag = a->curve.empty() ? "--plot" : "--curve";
+      for (const auto& s : curve)
         if (!s.checked)
-          throw NoAnswerError("--curve: the general model does not confirm the closed form at theta = " +
-                              round_trip_text(to_degrees(s.theta)) + " deg (" + std::to_string(c.unchecked) +
-                              " of " + std::to_string(c.samples.size()) + " samples unchecked)");
-      std::string csv =
-          "theta_deg,gamma_m_deg,gamma_v_deg,energy,height,deflection,force,force_closed_form,min_reduced_hessian_eigenvalue,stable\n";
-      for (const auto& s : c.samples)
-        csv += round_trip_text(to_degrees(s.theta)) + "," + round_trip_text(to_degrees(s.angles.gamma_m)) + "," +
-               round_trip_text(to_degrees(s.angles.gamma_v)) + "," + round_trip_text(s.energy) + "," +
-               round_trip_text(s.height) + "," + round_trip_text(s.deflection) + "," + round_trip_text(s.force) + "," +
-               round_trip_text(s.force_closed_form) + "," + round_trip_text(s.min_eigenvalue) + "," +
-               (s.stable ? "1" : "0") + "\n";
-      outputs.stage(a->curve, csv);
+          throw NoAnswerError(std::string(flag) + ": the general model does not confirm the closed form at theta = " +
+                              round_trip_text(to_degrees(s.theta)) + " deg (" + std::to_string(unchecked) + " of " +
+                              std::to_string(curve.size()) + " samples unchecked)");
+      const std::string csv = curve_csv(curve);
+      if (!a->curve.empty()) outputs.stage(a->curve, csv);
+      if (!a->plot.empty()) {
+        const std::string document = document_text(j) + "\n";
+        const std::string png = draw_plot(csv, document);
+        outputs.stage(plot_csv, csv);
+        outputs.stage(plot_json, document);
+        outputs.stage(plot_png, png);
+      }
     }
     outputs.commit();
     if (a->json) {
@@ -160,8 +335,13 @@ void add_waterbomb_command(CLI::App& app) {
       return;
     }
     char line[320];
+    if (split_fold) {
+      std::snprintf(line, sizeof line, "split-fold waterbomb base n = %d, b = %.12g deg (valid range [%.12g, %.12g] deg)\n", a->n,
+                    a->split_deg, lower_deg, limit_deg);
+      std::cout << line;
+    }
     std::snprintf(line, sizeof line, "waterbomb base n = %d, rest theta0 = %.12g deg (gamma_m0 = %.12g, gamma_v0 = %.12g deg), k_m = %.12g, k_v = %.12g\n",
-                  a->n, a->theta0_deg, to_degrees(r.springs.rest.gamma_m), to_degrees(r.springs.rest.gamma_v), k_m, k_v);
+                  a->n, a->theta0_deg, to_degrees(rest.gamma_m), to_degrees(rest.gamma_v), k_m, k_v);
     std::cout << line;
     for (const auto& s : list) {
       std::snprintf(line, sizeof line, "  %-26s theta = %.12g deg  (gamma_m, gamma_v) = (%.12g, %.12g) deg  energy %.12g%s%s\n",
@@ -187,11 +367,17 @@ void add_waterbomb_command(CLI::App& app) {
                     k_v, a->target_switching_force);
       std::cout << line;
     }
-    for (const auto& b : barriers) {
+    for (const auto& bar : barriers) {
       std::snprintf(line, sizeof line, "  barrier over the flat state from theta = %.12g deg: %.12g (symmetric path)\n",
-                    b["from_theta_deg"].get<double>(), b["symmetric_path_barrier"].get<double>());
+                    bar["from_theta_deg"].get<double>(), bar["symmetric_path_barrier"].get<double>());
       std::cout << line;
     }
+    for (const auto& u : unconfirmed) {
+      std::snprintf(line, sizeof line, "  unconfirmed %s next to a contact limit, theta in [%.6g, %.6g] deg (not an equilibrium of this result)\n",
+                    u["kind"].get<std::string>().c_str(), u["theta_from_deg"].get<double>(), u["theta_to_deg"].get<double>());
+      std::cout << line;
+    }
+    if (!a->plot.empty()) std::cout << "  wrote " << plot_csv << ", " << plot_json << ", " << plot_png << "\n";
   });
 }
 

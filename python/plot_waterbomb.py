@@ -94,7 +94,7 @@ def main():
         ax_f.plot([s["height"] for s in group], [s["force"] for s in group], color="tab:blue",
                   ls="-" if stable else "--", lw=1.4)
     ax_f.plot([s["height"] for s in samples[::6]], [s["force_closed_form"] for s in samples[::6]], ".",
-              color="black", ms=3, label="closed form (eq. 3.9)")
+              color="black", ms=3, label="closed form (eq. 3.9; split fold: dV/dh of eqs 3.15-3.31)")
     ax_f.plot([], [], color="tab:blue", label="general model, stable")
     ax_f.plot([], [], color="tab:blue", ls="--", label="general model, unstable (buckles)")
     ax_f.axhline(0.0, color="0.7", lw=0.8)
@@ -105,12 +105,13 @@ def main():
     pad = 0.3 * max(hi - lo, 1e-12)
     ax_f.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
     ax_f.axvline(0.0, color="0.7", lw=0.8, ls=":")  # the flat state: h = 0
-    ax_f.set_xlabel("apex height h (radius-1 base; flat at 0)")
+    ax_f.set_xlabel("apex height h (radius-1 base, unit creases if split; flat at 0)")
     ax_f.set_ylabel("force F (push > 0)")
     ax_f.set_title("force against apex height (displacement control)")
     ax_f.legend(fontsize=8)
     n, t0 = summary.get("n"), summary.get("theta0_deg")
-    fig.suptitle(a.title or f"waterbomb base n = {n}, rest theta0 = {t0} deg, k_m = {summary.get('k_m')}, "
+    kind = "waterbomb base" if "split_deg" not in summary else f"split-fold waterbomb base (b = {summary['split_deg']} deg)"
+    fig.suptitle(a.title or f"{kind} n = {n}, rest theta0 = {t0} deg, k_m = {summary.get('k_m')}, "
                  f"k_v = {summary.get('k_v')}")
     fig.tight_layout()
     stamp_inputs(fig, [a.curve, a.summary], version_of(summary))

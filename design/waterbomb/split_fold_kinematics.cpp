@@ -77,21 +77,84 @@ SplitFoldRange split_fold_range(int n, double b) {
   // Just above the contact: below it (3.19) returns the reflected, non-physical gamma_v, and
   // the golden section places the maximum only to ~1e-8 rad.
   r.theta_min = 0.5 * (lo + hi) + 1e-7;
+  // The printed forms may break down before that contact (b large against alpha: an acos
+  // argument leaves [-1, 1], or (3.21)'s atan jumps): walk from flat toward each end on a
+  // grid, requiring the forms to be defined and the angle that moves monotonically on that
+  // side (gamma_m below flat, gamma_v above) to keep moving the same way; the first grid
+  // point that fails bounds the range, bisected to 1e-12 rad.
+  auto angles = [&](double theta, FoldPair* out) {
+    try {
+      *out = split_fold_angles_printed(n, b, theta);
+      return std::isfinite(out->gamma_m) && std::isfinite(out->gamma_v);
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  constexpr int kWalk = 4096;
+  {
+    FoldPair prev, cur;
+    double good = kPi / 2 - 1e-6;
+    angles(good, &prev);
+    for (int i = 1; i <= kWalk; ++i) {
+      const double t = kPi / 2 - 1e-6 - (kPi / 2 - 1e-6 - r.theta_min) * i / kWalk;
+      // Below flat gamma_m falls as theta falls.
+      if (angles(t, &cur) && cur.gamma_m <= prev.gamma_m) {
+        good = t;
+        prev = cur;
+        continue;
+      }
+      double bad = t;
+      for (int it = 0; it < 60 && good - bad > 1e-12; ++it) {
+        const double mid = 0.5 * (good + bad);
+        FoldPair m;
+        (angles(mid, &m) && m.gamma_m <= prev.gamma_m ? good : bad) = mid;
+      }
+      r.theta_min = good;
+      r.lower_is_contact = false;
+      break;
+    }
+  }
   // Far side: the mirror of the theta* state, (gamma_m, gamma_v) = (-gamma_v*, -gamma_m*).
   // Matched on gamma_v = -gamma_m(theta*): gamma_m is smooth at theta* while gamma_v has a
   // square-root onset there, so gamma_v(theta*) is not resolved from theta* in double.
   const double target = -split_fold_angles_printed(n, b, r.theta_min).gamma_m;
   double a = kPi / 2 + 1e-9, c = kPi - 1e-9;
+  {
+    FoldPair prev, cur;
+    double good = kPi / 2 + 1e-6;
+    angles(good, &prev);
+    for (int i = 1; i <= kWalk; ++i) {
+      const double t = kPi / 2 + 1e-6 + (kPi / 2 - 2e-6) * i / kWalk;
+      const bool ok = angles(t, &cur) && cur.gamma_v >= prev.gamma_v;
+      if (ok && cur.gamma_v < target) {
+        good = t;
+        prev = cur;
+        continue;
+      }
+      if (ok) {  // the mirror contact lies in (good, t]
+        a = good;
+        c = t;
+        break;
+      }
+      double bad = t;
+      for (int it = 0; it < 60 && bad - good > 1e-12; ++it) {
+        const double mid = 0.5 * (good + bad);
+        FoldPair m;
+        (angles(mid, &m) && m.gamma_v >= prev.gamma_v ? good : bad) = mid;
+      }
+      r.theta_max = good;
+      r.upper_is_contact = false;
+      return r;
+    }
+  }
   for (int it = 0; it < 200 && c - a > 1e-15; ++it) {
     const double mid = 0.5 * (a + c);
-    double gv;
-    try {
-      gv = split_fold_angles_printed(n, b, mid).gamma_v;
-    } catch (const InputError&) {
+    FoldPair m;
+    if (!angles(mid, &m)) {
       c = mid;  // past the printed forms' own domain: beyond the contact
       continue;
     }
-    (gv < target ? a : c) = mid;
+    (m.gamma_v < target ? a : c) = mid;
   }
   r.theta_max = 0.5 * (a + c);
   return r;

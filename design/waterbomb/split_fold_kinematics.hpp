@@ -26,9 +26,15 @@ FoldPair split_fold_angles_printed(int n, double b, double theta);
 //   theta_max: the mirror contact on the far side, where gamma_v = -gamma_m(theta*) (the path
 //     is symmetric about gamma_v = -gamma_m), by bisection; gamma_v rises monotonically
 //     from flat there.
+// Where the printed forms break down before a contact (b large against alpha: an acos
+// argument leaves [-1, 1], or eq. (3.21)'s atan jumps and gamma_v turns back), found by
+// walking from flat on a 4096-point grid (gamma_m must fall below flat, gamma_v rise above)
+// and bisecting to 1e-12 rad, the range ends there instead and *_is_contact is false.
 struct SplitFoldRange {
   double theta_min = 0.0;
   double theta_max = 0.0;
+  bool lower_is_contact = true;  // theta_min is theta* (f = 0)
+  bool upper_is_contact = true;  // theta_max is the mirror contact
 };
 SplitFoldRange split_fold_range(int n, double b);
 

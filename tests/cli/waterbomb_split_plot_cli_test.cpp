@@ -1,0 +1,143 @@
+// `rigidfold waterbomb --split-deg B` (the split-fold base) and `--plot DIR` (CSV, JSON and
+// PNG of the energy and force curves): JSON equal to the library's doubles, exit 2 naming the
+// flag on bad input, nothing written by a failed command, and clashing outputs refused.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "design/waterbomb/split_fold_bistability.hpp"
+#include "kernel/math/angle_units.hpp"
+#include "tests/support/run_command.hpp"
+
+namespace rigidfold {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& tag) {
+  const fs::path dir = fs::temp_directory_path() / ("rigidfold_wbsplit_" + tag + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(WaterbombSplitCli, JsonMatchesTheLibrary) {
+  const auto r = test::run_command(test::cli() + " waterbomb --n 4 --split-deg 5 --theta0-deg 60 --k-ratio 1.5 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["split_deg"].get<double>(), 5.0);
+  const auto lib = waterbomb::split_fold_bistability(4, to_radians(5.0), to_radians(60.0), 1.5, 1.0);
+  ASSERT_EQ(j["equilibria"].size(), lib.equilibria.size());
+  int stable = 0;
+  for (std::size_t i = 0; i < lib.equilibria.size(); ++i) {
+    const auto& e = j["equilibria"][i];
+    EXPECT_EQ(e["theta_deg"].get<double>(), to_degrees(lib.equilibria[i].path.theta));
+    EXPECT_EQ(e["energy"].get<double>(), lib.equilibria[i].path.energy);
+    EXPECT_EQ(e["gamma_v_deg"].get<double>(), to_degrees(lib.equilibria[i].path.angles.gamma_v));
+    if (e["stable"].get<bool>()) ++stable;
+  }
+  EXPECT_EQ(stable, 2);
+  EXPECT_FALSE(j.contains("switching_force"));  // not available for split folds: not printed
+  ASSERT_EQ(j["barriers"].size(), 2u);
+}
+
+TEST(WaterbombSplitCli, BadInputExitsTwoNamingTheFlag) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--n 4 --split-deg 45 --theta0-deg 60", "--split-deg"},
+      {"--n 4 --split-deg 0 --theta0-deg 60", "--split-deg"},
+      {"--n 4 --split-deg -3 --theta0-deg 60", "--split-deg"},
+      {"--n 4 --split-deg nan --theta0-deg 60", "--split-deg"},
+      {"--n 4 --split-deg inf --theta0-deg 60", "--split-deg"},
+      {"--n 4 --split-deg x --theta0-deg 60", "--split-deg"},
+      {"--n 2 --split-deg 5 --theta0-deg 60", "--n"},
+      {"--n 4 --split-deg 20 --theta0-deg 5", "--theta0-deg"},      // below theta* = 10.16 deg
+      {"--n 4 --split-deg 5 --theta0-deg 137", "--theta0-deg"},     // above theta_max = 136.53 deg
+      {"--n 4 --split-deg 5 --theta0-deg 60 --target-switching-force 1", "--split-deg"},
+      {"--n 4 --split-deg 5 --theta0-deg 60 --k-m -1 --k-v 1", "--k-m"},
+      {"--n 4 --split-deg 5 --theta0-deg 60 --samples 11", "--samples"},
+  };
+  for (const auto& [flags, name] : cases) {
+    const auto r = test::run_command(test::cli() + " waterbomb " + flags);
+    EXPECT_EQ(r.status, 2) << flags;
+    EXPECT_NE(r.err.find(name), std::string::npos) << flags << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << flags;
+  }
+  // The range is named in the message.
+  const auto r = test::run_command(test::cli() + " waterbomb --n 6 --split-deg 31 --theta0-deg 60");
+  EXPECT_NE(r.err.find("(0, 30)"), std::string::npos) << r.err;
+}
+
+// --plot: three files; the CSV is the library's curve digit for digit, the JSON the --json
+// document, the PNG a PNG. The plain base as well.
+TEST(WaterbombSplitCli, PlotWritesCsvJsonAndPng) {
+  const fs::path dir = scratch("plot");
+  for (const std::string& split : {std::string(" --split-deg 5"), std::string()}) {
+    const fs::path out = dir / (split.empty() ? "plain" : "split");
+    const std::string flags = " waterbomb --n 4" + split + " --theta0-deg 60";
+    const auto r = test::run_command(test::cli() + flags + " --samples 31 --plot " + out.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string png = read(out / "waterbomb.png");
+    ASSERT_GT(png.size(), 1000u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    const auto json = test::run_command(test::cli() + flags + " --json");
+    ASSERT_EQ(json.status, 0);
+    auto strip = [](nlohmann::json j) {
+      j.erase("provenance");
+      return j;
+    };
+    EXPECT_EQ(strip(nlohmann::json::parse(read(out / "waterbomb.json"))), strip(nlohmann::json::parse(json.out)));
+    const fs::path csv = dir / (split.empty() ? "plain.csv" : "split.csv");
+    ASSERT_EQ(test::run_command(test::cli() + flags + " --samples 31 --curve " + csv.string()).status, 0);
+    EXPECT_EQ(read(csv), read(out / "waterbomb.csv"));
+    if (!split.empty()) {
+      const auto lib = waterbomb::split_fold_curve(4, to_radians(5.0), to_radians(60.0), 1.0, 1.0, 31);
+      std::istringstream lines(read(csv));
+      std::string line;
+      std::getline(lines, line);
+      for (const auto& s : lib.samples) {
+        ASSERT_TRUE(std::getline(lines, line));
+        EXPECT_EQ(std::stod(line.substr(0, line.find(','))), to_degrees(s.theta));
+      }
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// A failed command writes nothing into DIR; an output on an input or on another output is refused.
+TEST(WaterbombSplitCli, FailedOrClashingPlotWritesNothing) {
+  const fs::path dir = scratch("fail");
+  const fs::path out = dir / "plot";
+  auto r = test::run_command(test::cli() + " waterbomb --n 4 --split-deg 45 --theta0-deg 60 --plot " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(fs::exists(out / "waterbomb.png"));
+  EXPECT_FALSE(fs::exists(out / "waterbomb.csv"));
+  r = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --plot " + out.string() + " --curve " +
+                        (out / "waterbomb.csv").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--plot"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "waterbomb.png"));
+  // A file where the directory should be.
+  std::ofstream(dir / "file") << "x";
+  r = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --plot " + (dir / "file").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--plot"), std::string::npos) << r.err;
+  EXPECT_EQ(read(dir / "file"), "x");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rigidfold
