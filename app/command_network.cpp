@@ -1,24 +1,35 @@
-// rigidfold network NETWORK.json [--json] [--trace N]
+// rigidfold network NETWORK.json [--json] [--trace N] [--out P.fold]
 // A network of spherical linkages given by twists (kernel/network/network_json.hpp): a closed
 // configuration at the input's start value, the mobility there (DOF with the stated rank
 // tolerance), and with --trace N the input-output relation over N equal input steps.
 // Joint angles are the seed-003 DH angles theta (linkage_network.hpp); a crease's fold angle
 // is rho = -theta. Every configuration printed has its closure residual checked first.
+// --out P.fold: a mobile assembly of four 4R linkages whose vertices are flat paper (2-33)
+// around a flat central panel (2-32) as a crease pattern (network_crease_pattern.hpp), its
+// letters and fold angles those of the configuration at the input's start; the conditions
+// are checked before anything is solved (exit 2 naming the place and the reason), and the
+// file is written only after the pattern's own vertex loops close there.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/network/network_closure.hpp"
+#include "kernel/network/network_crease_pattern.hpp"
 #include "kernel/network/network_json.hpp"
 #include "kernel/network/network_trace.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
+#include "kernel/pattern/assignment.hpp"
+#include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/output_set.hpp"
+#include "app/summary_stream.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -52,17 +63,33 @@ void add_network_command(CLI::App& app) {
     std::string path;
     bool json = false;
     int trace = 0;
+    std::string out;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("NETWORK", a->path, "network JSON (linkages, twists_deg, shared joints)")->required();
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--trace", a->trace, "trace the input from input.start_deg to input.end_deg in N steps");
+  cmd->add_option("--out", a->out,
+                  "write the assembly of four 4R linkages as a FOLD crease pattern (needs flat vertices (2-33), a flat "
+                  "central panel (2-32) and a mobile network; letters from the configuration at input.start_deg)");
   cmd->callback([a] {
     if (a->trace < 0 || a->trace > kMaxTraceSteps) throw InputError("--trace", "must be in 0..10000");
     const NetworkSpec spec = read_network_json(a->path);
     if (a->trace > 0 && !spec.has_end) throw InputError(a->path + ": input.end_deg", "needed by --trace");
     const NetworkClosure system(spec.network);
     const LinkageNetwork& net = system.network();
+    OutputSet outputs;
+    if (!a->out.empty()) {
+      outputs.add_output("--out", a->out);
+      // The layout's conditions, before anything is solved: at the flat state (q = 0) only
+      // the loops' closure can miss (joint offsets), which is checked again at the real
+      // configuration below.
+      try {
+        network_crease_pattern(net, Eigen::VectorXd::Zero(net.num_joints()), a->path);
+      } catch (const NoAnswerError&) {
+      }
+    }
+    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
 
     // A closed configuration with the input at its start value. None found is evidence (not
     // proof) that the network does not move through that input; the free search is not tried
@@ -85,6 +112,8 @@ void add_network_command(CLI::App& app) {
     if (!start.found) {
       if (a->trace > 0)
         throw NoAnswerError("network: no closed configuration at input.start_deg to trace from", start.residual);
+      if (!a->out.empty())
+        throw NoAnswerError("network --out: no closed configuration at input.start_deg to take the letters from", start.residual);
       j["configuration"] = {{"input_joint", net.joint_names[spec.input]},
                             {"input_start_deg", to_degrees(spec.input_start)},
                             {"closed_at_input_start", false},
@@ -147,6 +176,29 @@ void add_network_command(CLI::App& app) {
       verdict += " with the input held: other joints move, the input does not";
     }
     j["verdict"] = verdict;
+    std::optional<NetworkCreasePattern> cp;
+    if (!a->out.empty()) {
+      if (!(mob.dof > 0 && moves > 0))
+        throw InputError("--out", "the network is not mobile through input.start_deg (" + verdict +
+                                      "): a crease pattern is written for a mobile assembly only");
+      cp = network_crease_pattern(net, start.q, a->path, kClosureTolerance);
+      outputs.stage(a->out, write_fold_string(cp->pattern));
+      nlohmann::ordered_json c;
+      c["file"] = a->out;
+      c["vertices"] = cp->pattern.num_vertices();
+      c["creases"] = cp->pattern.num_edges() - 8;
+      c["central_angle_sum_deg"] = to_degrees(cp->central_angle_sum);
+      c["vertex_linkages"] = cp->vertex_linkage;
+      nlohmann::ordered_json o = nlohmann::ordered_json::object();
+      for (int k = 0; k < net.num_linkages(); ++k) o[net.linkages[k].name] = cp->orientation[k] > 0 ? "as given" : "reversed";
+      c["layout"] = o;
+      std::string letters;
+      for (int e = 0; e < cp->pattern.num_edges(); ++e)
+        if (cp->edge_joint[e] >= 0) letters += assignment_letter(cp->pattern.assignments[e]);
+      c["letters"] = letters;
+      c["vertex_loop_residual_rad"] = cp->residual;
+      j["crease_pattern"] = c;
+    }
 
     NetworkTrace trace;
     if (a->trace > 0) {
@@ -169,6 +221,7 @@ void add_network_command(CLI::App& app) {
       tr["points"] = pts;
       j["trace"] = tr;
     }
+    outputs.commit();
     if (a->json) {
       std::cout << document_text(j) << "\n";
       return;
@@ -193,6 +246,10 @@ void add_network_command(CLI::App& app) {
       }
       if (!trace.complete) std::printf("trace stopped: %s\n", trace.stop_reason.c_str());
     }
+    if (cp)
+      std::printf("crease pattern: %d vertices, %d creases (letters %s), vertex loops close to %.1e rad; wrote %s\n",
+                  cp->pattern.num_vertices(), cp->pattern.num_edges() - 8,
+                  j["crease_pattern"]["letters"].get<std::string>().c_str(), cp->residual, a->out.c_str());
   });
 }
 
