@@ -82,7 +82,9 @@ void bind_analysis(py::module_& m) {
   m.def(
       "check",
       [](const CreasePattern& pattern, bool use_assignment, bool force_general, bool explore_branches,
-         const std::string& source) {
+         const std::string& source, std::optional<double> coordinate_tolerance) {
+        if (coordinate_tolerance && !(*coordinate_tolerance >= 0 && std::isfinite(*coordinate_tolerance)))
+          throw py::value_error("coordinate_tolerance: must be a finite number >= 0 (0: exact data), or None");
         nlohmann::ordered_json j;
         {
           py::gil_scoped_release release;
@@ -91,18 +93,20 @@ void bind_analysis(py::module_& m) {
           options.use_assignment = use_assignment;
           options.force_general = force_general;
           options.explore_branches = explore_branches;
+          options.coordinate_tolerance = coordinate_tolerance;
           j = cli::foldability_json(check_foldability(pattern, topology, options));
         }
         return json_to_python(j);
       },
       py::arg("pattern"), py::arg("use_assignment") = true, py::arg("force_general") = false,
-      py::arg("explore_branches") = true, py::arg("source") = "pattern",
+      py::arg("explore_branches") = true, py::arg("source") = "pattern", py::arg("coordinate_tolerance") = py::none(),
       "Rigid-foldability verdict (the kernel's check_foldability) as a dict, the object `rigidfold check --json` "
       "prints (without its 'file' key): verdict_class (foldable; foldable within the input's precision; not "
       "foldable (proof); not foldable (evidence); undecided), verdict, rigidly_foldable, is_proof, dof, reason, "
       "model, model_choice, branches, bifurcations, obstruction, max_residual (rad), tolerances, seconds.\n"
       "use_assignment=False ignores the M-V letters; force_general skips multiplier propagation; source names "
-      "the pattern in error messages. Angles in the dict: keys ending in _deg are degrees, the rest radians.");
+      "the pattern in error messages; coordinate_tolerance (`check --tolerance`): how far each coordinate may lie "
+      "from the true one (length unit; 0: exact data; None: read off the input), stated in coordinate_precision. Angles in the dict: keys ending in _deg are degrees, the rest radians.");
 
   m.def(
       "trace",

@@ -45,6 +45,19 @@ def test_check_equals_the_cli_bit_for_bit(cli, name, use_assignment):
     assert without_timings(r) == without_timings(expected)
 
 
+def test_coordinate_tolerance_equals_the_cli_and_is_checked(cli):
+    path = bundled("miura_4x4_alpha60.fold")
+    for given, flag in ((0.0, "exact"), (1e-3, "0.001")):
+        r = rigidfold.check(rigidfold.load(path), coordinate_tolerance=given, source=path)
+        expected = cli("check", path, "--tolerance", flag)
+        del expected["file"]
+        assert without_timings(r) == without_timings(expected)
+    assert "stated with --tolerance" in r["coordinate_precision"]
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="coordinate_tolerance"):
+            rigidfold.check(rigidfold.load(path), coordinate_tolerance=bad)
+
+
 def test_not_foldable_assignment_is_a_proof():
     # Square twist type 1 (seed 001): its assignment admits no rigid motion.
     r = rigidfold.check(rigidfold.square_twist("type1"))
