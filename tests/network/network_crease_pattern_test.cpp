@@ -126,6 +126,53 @@ TEST(NetworkCreasePattern, Eq234IsTheFig212PatternWithOneDof) { check_pattern("e
 // flat with these letters, `rigidfold check` reports evidence against.)
 TEST(NetworkCreasePattern, TableA4RowLayout) { check_pattern("a4_R3R13R12.json", false); }
 
+// The same assembly with linkages B and D given clockwise (joints reversed, twists
+// (alpha_2, alpha_1, alpha_0, alpha_3), every joint angle negated: sign -1), the two-fold
+// case's coupling (2-15). The reversed loops close at the same q (the network's own closure
+// says so); the conversion lays B and D out reversed and gives the same crease pattern: the
+// same fold angle and letter for every network joint, the same vertex positions.
+TEST(NetworkCreasePattern, ClockwiseLinkagesWithNegatedCouplingGiveTheSamePattern) {
+  const Solved s = solve("eq2-34.json");
+  LinkageNetwork mirrored = s.spec.network;
+  for (int k : {1, 3}) {
+    NetworkLinkage& l = mirrored.linkages[k];
+    const NetworkLinkage given = l;
+    l.twists = {given.twists[2], given.twists[1], given.twists[0], given.twists[3]};
+    for (int i = 0; i < 4; ++i) {
+      l.joints[i] = given.joints[3 - i];
+      l.joints[i].sign = -given.joints[3 - i].sign;
+      l.joints[i].offset = -given.joints[3 - i].offset;
+    }
+  }
+  EXPECT_LE(NetworkClosure(mirrored).residual(s.q).lpNorm<Eigen::Infinity>(), 1e-12);
+  const NetworkCreasePattern a = network_crease_pattern(s.spec.network, s.q, "given");
+  const NetworkCreasePattern b = network_crease_pattern(mirrored, s.q, "mirrored");
+  EXPECT_EQ(b.orientation, (std::vector<int>{1, -1, 1, -1}));
+  EXPECT_EQ(a.orientation, (std::vector<int>{1, 1, 1, 1}));
+  EXPECT_LE(b.residual, 1e-12);
+  ASSERT_EQ(a.pattern.num_edges(), b.pattern.num_edges());
+  for (int e = 0; e < a.pattern.num_edges(); ++e) {
+    if (a.edge_joint[e] < 0) continue;
+    int f = -1;
+    for (int g = 0; g < b.pattern.num_edges(); ++g)
+      if (b.edge_joint[g] == a.edge_joint[e]) f = g;
+    ASSERT_GE(f, 0);
+    EXPECT_EQ(b.pattern.assignments[f], a.pattern.assignments[e]) << "joint " << a.edge_joint[e];
+    EXPECT_LE(angle_diff(*b.pattern.fold_angles[f], *a.pattern.fold_angles[e]), 1e-12) << "joint " << a.edge_joint[e];
+  }
+  for (int v = 0; v < 4; ++v) EXPECT_LE((b.pattern.vertices[v] - a.pattern.vertices[v]).norm(), 1e-12) << v;
+  // Reversing B alone breaks the coupling with its neighbours (sign -1 now against +1).
+  LinkageNetwork half = s.spec.network;
+  half.linkages[1] = mirrored.linkages[1];
+  for (auto& r : half.linkages[1].joints) r.sign = -r.sign;  // the angles as given: not the same loop
+  try {
+    network_crease_pattern(half, s.q, "half");
+    ADD_FAILURE() << "a reversed linkage with unnegated couplings was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different angles"), std::string::npos) << e.what();
+  }
+}
+
 std::string place_of(const LinkageNetwork& net, const Eigen::VectorXd& q) {
   try {
     network_crease_pattern(net, q, "net.json");
