@@ -8,6 +8,10 @@
 // --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
 // every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
 // in the split fold's contact limits. No switching force or design for split folds yet.
+// --target-second-state-deg T2 (plain base, replaces --theta0-deg): the rest angle theta0 whose
+// second stable state lies at T2 (design/waterbomb/waterbomb_rest_design.hpp), then the whole
+// analysis at that theta0; the design is printed only when a checked stable state lies within
+// 1e-9 rad of T2 (exit 3 otherwise).
 // --plot DIR: DIR/waterbomb.csv (the --curve table), DIR/waterbomb.json (the --json document)
 // and DIR/waterbomb.png (energy and force against apex height, drawn by /usr/bin/python3
 // python/plot_waterbomb.py in a private temporary directory); all three staged with the other
@@ -37,6 +41,7 @@
 #include "design/waterbomb/split_fold_bistability.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
 #include "design/waterbomb/waterbomb_curve.hpp"
+#include "design/waterbomb/waterbomb_rest_design.hpp"
 #include "design/waterbomb/waterbomb_switching.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/math/number_text.hpp"
@@ -145,12 +150,13 @@ void add_waterbomb_command(CLI::App& app) {
     double split_deg = 0;
     int samples = 181;
     double target_switching_force = 0;
+    double target_second_state_deg = 0;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180")->required();
-  cmd->add_option("--theta0-deg", a->theta0_deg,
-                  "rest state: angle between a valley crease and the axis, degrees in [0, 180 - 180/n]")
-      ->required();
+  auto* theta0_opt = cmd->add_option("--theta0-deg", a->theta0_deg,
+                                     "rest state: angle between a valley crease and the axis, degrees in [0, 180 - 180/n] "
+                                     "(required unless --target-second-state-deg designs it)");
   auto* ratio = cmd->add_option("--k-ratio", a->k_ratio, "k_m / k_v with k_v = 1 (>= 0)");
   auto* km = cmd->add_option("--k-m", a->k_m, "stiffness of each mountain crease (>= 0, energy / rad^2)");
   auto* kv = cmd->add_option("--k-v", a->k_v, "stiffness of each valley crease (>= 0, energy / rad^2)");
@@ -167,9 +173,30 @@ void add_waterbomb_command(CLI::App& app) {
   auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve / --plot over the valid range, 3..2001 (default 181)");
   auto* target = cmd->add_option("--target-switching-force", a->target_switching_force,
                                   "design: the mountain stiffness k_m (k_v as given, default 1) whose switching force is this (> 0; radius-1 base)");
-  cmd->callback([a, ratio, samples, target, split] {
+  auto* second = cmd->add_option("--target-second-state-deg", a->target_second_state_deg,
+                                  "design: the rest angle theta0 (replaces --theta0-deg) whose second stable state lies at this theta, "
+                                  "degrees in (90, 180 - 180/n); plain base only");
+  cmd->callback([a, ratio, samples, target, split, theta0_opt, second] {
     if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
     const bool split_fold = split->count() > 0;
+    const bool design_rest = second->count() > 0;
+    if (design_rest && theta0_opt->count() > 0)
+      throw InputError("--target-second-state-deg", "designs the rest angle: give it without --theta0-deg");
+    if (!design_rest && theta0_opt->count() == 0)
+      throw InputError("--theta0-deg", "is required (or --target-second-state-deg to design it)");
+    if (design_rest && split_fold)
+      throw InputError("--target-second-state-deg", "is for the plain base only (not with --split-deg)");
+    if (design_rest && target->count() > 0)
+      throw InputError("--target-second-state-deg", "cannot be combined with --target-switching-force");
+    if (design_rest) {
+      const double hi = 180.0 - 180.0 / a->n;
+      if (!std::isfinite(a->target_second_state_deg) || !(a->target_second_state_deg > 90.0) ||
+          !(a->target_second_state_deg < hi) || !(to_radians(a->target_second_state_deg) < kPi - kPi / a->n))
+        throw InputError("--target-second-state-deg", "must lie in (90, " + round_trip_text(hi) + ") degrees for n = " +
+                                                          std::to_string(a->n) + ", got " +
+                                                          round_trip_text(a->target_second_state_deg));
+      a->theta0_deg = 45.0;  // a placeholder inside the range, replaced by the design below
+    }
     double limit_deg = 180.0 - 180.0 / a->n, lower_deg = 0.0;
     double b = 0.0;
     waterbomb::SplitFoldRange split_range;
@@ -199,8 +226,13 @@ void add_waterbomb_command(CLI::App& app) {
     if (!std::isfinite(k_m) || k_m < 0.0) throw InputError("--k-m", "must be a finite number >= 0");
     if (!std::isfinite(k_v) || k_v < 0.0) throw InputError("--k-v", "must be a finite number >= 0");
     if (k_m == 0.0 && k_v == 0.0) throw InputError("--k-m", "at least one stiffness must be > 0");
+    waterbomb::RestAngleDesign rest_design;
+    if (design_rest) {
+      rest_design = waterbomb::rest_angle_for_state2(a->n, to_radians(a->target_second_state_deg), k_m, k_v);
+      a->theta0_deg = to_degrees(rest_design.theta0);
+    }
     // Clamp against the last-bit rounding of the degree conversion at the upper limit.
-    const double theta0 = split_fold ? std::min(std::max(to_radians(a->theta0_deg), split_range.theta_min), split_range.theta_max)
+    const double theta0 = design_rest ? rest_design.theta0 : split_fold ? std::min(std::max(to_radians(a->theta0_deg), split_range.theta_min), split_range.theta_max)
                                      : std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
     if (samples->count() > 0 && a->curve.empty() && a->plot.empty()) throw InputError("--samples", "needs --curve or --plot");
     if (split_fold && target->count() > 0)
@@ -240,6 +272,16 @@ void add_waterbomb_command(CLI::App& app) {
       equilibria = r.equilibria;
       path_barriers = r.symmetric_path_barriers();
       rest = r.springs.rest;
+      if (design_rest) {
+        // The design, confirmed forward: a stable state (checked on the unsymmetric model) at the target.
+        const double target2 = to_radians(a->target_second_state_deg);
+        double gap = INFINITY;
+        for (const auto& st : r.stable_states()) gap = std::min(gap, std::fabs(st.path.theta - target2));
+        if (!(gap <= 1e-9))
+          throw NoAnswerError("--target-second-state-deg: the forward analysis at the designed theta0 = " +
+                                  round_trip_text(a->theta0_deg) + " deg finds no stable state at the target (gap, rad)",
+                              gap);
+      }
     }
 
     nlohmann::ordered_json j;
@@ -291,6 +333,14 @@ void add_waterbomb_command(CLI::App& app) {
       const auto sw = waterbomb::switching_force_checked(a->n, theta0, k_m, k_v);
       j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat},
                               {"valley_crease_length", valley_length}, {"general_model_gap", sw.general_gap}};
+    }
+    if (design_rest) {
+      double gap = INFINITY;
+      for (const auto& e : list)
+        if (e["stable"].get<bool>()) gap = std::min(gap, std::fabs(to_radians(e["theta_deg"].get<double>()) - to_radians(a->target_second_state_deg)));
+      j["design"] = {{"target_second_state_deg", a->target_second_state_deg}, {"theta0_deg", a->theta0_deg},
+                     {"slope_residual", rest_design.slope_residual}, {"curvature", rest_design.curvature},
+                     {"second_state_gap_rad", gap}};
     }
     if (target->count() > 0) {
       if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
@@ -362,7 +412,11 @@ void add_waterbomb_command(CLI::App& app) {
                     j["switching_force"]["at_flat"].get<bool>() ? " (the flat corner)" : "");
       std::cout << line;
     }
-    if (j.contains("design")) {
+    if (design_rest) {
+      std::snprintf(line, sizeof line, "  design: rest theta0 = %.17g deg puts the second stable state at %.12g deg (gap %.1e rad)\n",
+                    a->theta0_deg, a->target_second_state_deg, j["design"]["second_state_gap_rad"].get<double>());
+      std::cout << line;
+    } else if (j.contains("design")) {
       std::snprintf(line, sizeof line, "  design: k_m = %.12g (with k_v = %.12g) switches at %.12g\n", j["design"]["k_m"].get<double>(),
                     k_v, a->target_switching_force);
       std::cout << line;
