@@ -222,32 +222,34 @@ void add_network_command(CLI::App& app) {
       j["trace"] = tr;
     }
     outputs.commit();
+    // With --out - the FOLD text went to standard output: the summary goes to stderr.
+    std::FILE* text = outputs.writes_stdout() ? stderr : stdout;
     if (a->json) {
       std::cout << document_text(j) << "\n";
       return;
     }
-    std::printf("network %s: %d joints, %d linkages, %d equations\n", a->path.c_str(), net.num_joints(), net.num_linkages(),
+    std::fprintf(text, "network %s: %d joints, %d linkages, %d equations\n", a->path.c_str(), net.num_joints(), net.num_linkages(),
                 system.num_rows());
-    if (!spec.description.empty()) std::printf("  %s\n", spec.description.c_str());
-    std::printf("closed configuration at %s = %.12g deg, residual %.2e rad (<= %.0e)\n", net.joint_names[spec.input].c_str(),
+    if (!spec.description.empty()) std::fprintf(text, "  %s\n", spec.description.c_str());
+    std::fprintf(text, "closed configuration at %s = %.12g deg, residual %.2e rad (<= %.0e)\n", net.joint_names[spec.input].c_str(),
                 to_degrees(spec.input_start), residual, kClosureTolerance);
-    for (int k = 0; k < net.num_joints(); ++k) std::printf("  %-8s %14.9f deg\n", net.joint_names[k].c_str(), wrapped_degrees(start.q[k]));
-    std::printf("mobility: DOF %d (input held: %d), rank %d, singular values kept >= %.3e, dropped <= %.3e (tolerance %.0e x %.3e)\n",
+    for (int k = 0; k < net.num_joints(); ++k) std::fprintf(text, "  %-8s %14.9f deg\n", net.joint_names[k].c_str(), wrapped_degrees(start.q[k]));
+    std::fprintf(text, "mobility: DOF %d (input held: %d), rank %d, singular values kept >= %.3e, dropped <= %.3e (tolerance %.0e x %.3e)\n",
                 mob.dof, mob_held.dof, mob.rank, mob.sigma_kept, mob.sigma_dropped, kRankTolerance, mob.sigma_max);
-    std::printf("verdict: %s\n", j["verdict"].get<std::string>().c_str());
+    std::fprintf(text, "verdict: %s\n", j["verdict"].get<std::string>().c_str());
     if (a->trace > 0) {
-      std::printf("trace of %s (deg):", net.joint_names[spec.input].c_str());
-      for (int k : spec.outputs) std::printf(" %s", net.joint_names[k].c_str());
-      std::printf("  residual_rad dof\n");
+      std::fprintf(text, "trace of %s (deg):", net.joint_names[spec.input].c_str());
+      for (int k : spec.outputs) std::fprintf(text, " %s", net.joint_names[k].c_str());
+      std::fprintf(text, "  residual_rad dof\n");
       for (const NetworkTracePoint& p : trace.points) {
-        std::printf("  %12.6f", to_degrees(p.input));
-        for (int k : spec.outputs) std::printf(" %12.6f", wrapped_degrees(p.q[k]));
-        std::printf("  %.1e %d\n", p.residual, p.dof);
+        std::fprintf(text, "  %12.6f", to_degrees(p.input));
+        for (int k : spec.outputs) std::fprintf(text, " %12.6f", wrapped_degrees(p.q[k]));
+        std::fprintf(text, "  %.1e %d\n", p.residual, p.dof);
       }
-      if (!trace.complete) std::printf("trace stopped: %s\n", trace.stop_reason.c_str());
+      if (!trace.complete) std::fprintf(text, "trace stopped: %s\n", trace.stop_reason.c_str());
     }
     if (cp)
-      std::printf("crease pattern: %d vertices, %d creases (letters %s), vertex loops close to %.1e rad; wrote %s\n",
+      std::fprintf(text, "crease pattern: %d vertices, %d creases (letters %s), vertex loops close to %.1e rad; wrote %s\n",
                   cp->pattern.num_vertices(), cp->pattern.num_edges() - 8,
                   j["crease_pattern"]["letters"].get<std::string>().c_str(), cp->residual, a->out.c_str());
   });

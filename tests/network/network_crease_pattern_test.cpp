@@ -242,6 +242,12 @@ TEST(NetworkCreasePatternCli, OutWritesFoldAndRefusesNonFlatNetworks) {
     EXPECT_NE(b.err.find(bad), std::string::npos) << b.err;
     EXPECT_FALSE(fs::exists(out)) << bad;
   }
+  // --out -: the FOLD alone on standard output, the summary on stderr.
+  const auto piped = test::run_command(test::cli() + " network " + data("eq2-34.json") + " --out -");
+  ASSERT_EQ(piped.status, 0) << piped.err;
+  const CreasePattern fromstdout = parse_fold(piped.out, "stdout");
+  EXPECT_EQ(fromstdout.num_vertices(), 12);
+  EXPECT_NE(piped.err.find("crease pattern: 12 vertices"), std::string::npos) << piped.err;
   const auto nodir = test::run_command(test::cli() + " network " + data("eq2-34.json") + " --out " + (dir / "no/such/p.fold").string());
   EXPECT_EQ(nodir.status, 2) << nodir.err;
   EXPECT_NE(nodir.err.find("--out"), std::string::npos) << nodir.err;
