@@ -1,5 +1,7 @@
-// rigidfold energy PATTERN --rest REST.json|REST.fold [--k-m K] [--k-v K] [--k-u K]
+// rigidfold energy PATTERN --rest REST.json|REST.fold [--k-m K] [--k-v K] [--k-u K | --stiffness SPEC.json]
 //                  [--starts N] [--seed S] [--json]
+// --stiffness SPEC.json: one stiffness per crease (kernel/energy/stiffness_spec.hpp: default,
+// by letter, by edge index, or from a flexure material), errors naming the JSON path.
 // Each state also says whether it keeps the M/V letters and whether panels pass through each
 // other there (the springs know neither).
 // Stable states of any crease pattern with torsional springs at its creases
@@ -19,6 +21,7 @@
 #include "kernel/energy/crease_stiffness.hpp"
 #include "kernel/energy/crease_spring_states.hpp"
 #include "kernel/energy/rest_angles.hpp"
+#include "kernel/energy/stiffness_spec.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
@@ -29,7 +32,7 @@ namespace rigidfold::cli {
 void add_energy_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("energy", "Stable states of a pattern with crease springs (multistart, no symmetry imposed)");
   struct Args {
-    std::string pattern, rest;
+    std::string pattern, rest, stiffness;
     double k_m = 1, k_v = 1, k_u = 1;
     int starts = 24;
     std::uint64_t seed = 1;
@@ -39,13 +42,18 @@ void add_energy_command(CLI::App& app) {
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
   cmd->add_option("--rest", a->rest, "rest state: JSON of fold angles ({\"edge\": degrees} or an array) or a FOLD of the same pattern")
       ->required();
-  cmd->add_option("--k-m", a->k_m, "stiffness of each mountain crease (>= 0, energy / rad^2; default 1)");
-  cmd->add_option("--k-v", a->k_v, "stiffness of each valley crease (>= 0; default 1)");
-  cmd->add_option("--k-u", a->k_u, "stiffness of each unassigned crease (>= 0; default 1)");
+  auto* km = cmd->add_option("--k-m", a->k_m, "stiffness of each mountain crease (>= 0, energy / rad^2; default 1)");
+  auto* kv = cmd->add_option("--k-v", a->k_v, "stiffness of each valley crease (>= 0; default 1)");
+  auto* ku = cmd->add_option("--k-u", a->k_u, "stiffness of each unassigned crease (>= 0; default 1)");
+  auto* spec = cmd->add_option("--stiffness", a->stiffness,
+                               "per-crease stiffness: JSON {default, mountain, valley, unassigned, edges {\"index\": k}, "
+                               "material {youngs_modulus, thickness, flexure_length, length_scale}}; replaces --k-m, --k-v, --k-u");
   cmd->add_option("--starts", a->starts, "random starts besides the rest state (0..1000, default 24)");
   cmd->add_option("--seed", a->seed, "seed of the random starts (default 1)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
-  cmd->callback([a] {
+  cmd->callback([a, km, kv, ku, spec] {
+    if (spec->count() > 0 && (km->count() > 0 || kv->count() > 0 || ku->count() > 0))
+      throw InputError("--stiffness", "replaces --k-m, --k-v and --k-u: give one or the other");
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     CreaseSpringProblem problem;
@@ -56,6 +64,7 @@ void add_energy_command(CLI::App& app) {
     problem.search.seed = a->seed;
     problem.rest_place = a->rest;
     CreaseSpringStates found;
+    if (spec->count() > 0) problem.edge_stiffness = read_stiffness_spec(a->stiffness, p);  // names the file and the JSON path
     try {
       problem.rest = read_rest_state(a->rest, p, t);
       found = crease_spring_states(p, t, problem);

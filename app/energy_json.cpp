@@ -12,7 +12,13 @@ nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, c
   const StableStateSearch& s = states.search;
   Json j;
   j["rest_closure_residual_rad"] = states.rest_closure_residual;
-  j["stiffness"] = {{"mountain", problem.stiffness.mountain}, {"valley", problem.stiffness.valley}, {"unassigned", problem.stiffness.unassigned}};
+  if (problem.edge_stiffness.size() != 0) {
+    Json per_edge = Json::array();
+    for (Eigen::Index e = 0; e < problem.edge_stiffness.size(); ++e) per_edge.push_back(problem.edge_stiffness[e]);
+    j["stiffness"] = {{"per_edge", per_edge}};
+  } else {
+    j["stiffness"] = {{"mountain", problem.stiffness.mountain}, {"valley", problem.stiffness.valley}, {"unassigned", problem.stiffness.unassigned}};
+  }
   j["starts"] = s.starts;
   j["starts_on_manifold"] = s.starts_on_manifold;
   j["starts_converged"] = s.starts_converged;

@@ -3,7 +3,8 @@
 // (kernel/energy/crease_spring_states.hpp), as `rigidfold energy --json` prints it after its
 // "file" and "rest" keys, and as the Python rigidfold.stable_states returns it. Serialises only.
 //
-// Keys: rest_closure_residual_rad, stiffness {mountain, valley, unassigned}, starts,
+// Keys: rest_closure_residual_rad, stiffness {mountain, valley, unassigned} (or {per_edge:
+// [k per edge]} when the problem has edge_stiffness), starts,
 // starts_on_manifold, starts_converged, stable_states [{energy, reached_from_starts,
 // from_rest, keeps_letters, creases_against_letters, facet_interference,
 // interfering_face_pairs, closure_residual_rad, stationarity_residual, tangent_dimension,

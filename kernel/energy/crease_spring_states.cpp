@@ -1,6 +1,7 @@
 #include "kernel/energy/crease_spring_states.hpp"
 
 #include <Eigen/SparseCore>
+#include <cmath>
 #include <string>
 
 #include "kernel/closure/closure_system.hpp"
@@ -19,7 +20,14 @@ CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topo
   if (system.num_unknowns() > kMaxSpringStateFreeCreases)
     throw InputError("pattern", std::to_string(system.num_unknowns()) + " free creases; the energy search takes at most " +
                                     std::to_string(kMaxSpringStateFreeCreases));
-  const Eigen::VectorXd stiffness = stiffness_by_assignment(pattern, problem.stiffness);
+  if (problem.edge_stiffness.size() != 0 && problem.edge_stiffness.size() != pattern.num_edges())
+    throw InputError("edge_stiffness", "has " + std::to_string(problem.edge_stiffness.size()) + " entries; the pattern has " +
+                                           std::to_string(pattern.num_edges()) + " edges");
+  const Eigen::VectorXd stiffness =
+      problem.edge_stiffness.size() != 0 ? problem.edge_stiffness : stiffness_by_assignment(pattern, problem.stiffness);
+  for (Eigen::Index e = 0; e < stiffness.size(); ++e)
+    if (!std::isfinite(stiffness[e]) || stiffness[e] < 0.0)
+      throw InputError("stiffness[" + std::to_string(e) + "]", "must be finite and >= 0");
   if (problem.rest.size() != pattern.num_edges())
     throw InputError(problem.rest_place, "has " + std::to_string(problem.rest.size()) + " angles; the pattern has " +
                                              std::to_string(pattern.num_edges()) + " edges");

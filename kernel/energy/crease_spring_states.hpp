@@ -26,6 +26,9 @@ inline constexpr int kMaxSpringStateStarts = 1000;
 
 struct CreaseSpringProblem {
   StiffnessByAssignment stiffness;   // per letter, >= 0
+  // When not empty (size num_edges(), e.g. from stiffness_spec.hpp): one stiffness per edge,
+  // used instead of `stiffness`.
+  Eigen::VectorXd edge_stiffness;
   Eigen::VectorXd rest;              // per edge, radians (FOLD sign): the springs' rest state
   std::string rest_place = "rest";   // named when the rest state is bad (the CLI passes its file)
   StableStateSearchOptions search;   // random_starts in [0, kMaxSpringStateStarts], seed
@@ -37,7 +40,8 @@ struct CreaseSpringStates {
 };
 
 // Throws InputError naming the place: "pattern" (more than kMaxSpringStateFreeCreases free
-// creases), "stiffness.mountain" / ".valley" / ".unassigned", "starts", rest_place (a rest
+// creases), "stiffness.mountain" / ".valley" / ".unassigned", "edge_stiffness" (wrong size;
+// "stiffness[e]" for a negative or non-finite entry), "starts", rest_place (a rest
 // state that does not close, with its residual and row; wrong size or range);
 // NoAnswerError when no start reaches a stable state.
 CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topology& topology,
