@@ -4,6 +4,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "kernel/closure/closure_second_order.hpp"
 #include "kernel/solve/portable_random.hpp"
@@ -40,6 +41,51 @@ int tangent_rank(const std::vector<Eigen::MatrixXd>& H, const Eigen::VectorXd& c
   int r = 0;
   for (int i = 0; i < s.size(); ++i) r += s[i] > tol;
   return r;
+}
+
+// One Gauss-Newton start on [q(c); |c|^2 - 1] = 0 from r.c; on return r.c is where it
+// ended and r.ok whether |q|_inf <= accept there.
+struct StartResult {
+  Eigen::VectorXd c;
+  bool ok = false;
+};
+
+void converge_start(const std::vector<Eigen::MatrixXd>& H, double accept, StartResult& r) {
+  const int k = static_cast<int>(r.c.size()), p = static_cast<int>(H.size());
+  Eigen::VectorXd& c = r.c;
+  Eigen::MatrixXd Hc(k, p);  // column j: H_j c, for both q_j = c . H_j c and the Jacobian row 2 (H_j c)^T
+  std::vector<double> history;  // |q|_inf per iteration
+  for (int it = 0; it < 60; ++it) {
+    for (int j = 0; j < p; ++j) Hc.col(j).noalias() = H[j] * c;
+    const Eigen::VectorXd q = Hc.transpose() * c;
+    history.push_back(q.lpNorm<Eigen::Infinity>());
+    if (history.back() <= 1e-3 * accept) {
+      r.ok = true;
+      return;
+    }
+    // A plateau: the least |q| of the last kStallWindow iterations is not 10% below the least
+    // before them. A start that converges, even linearly at a singular solution (ratio 1/2
+    // per step), falls far more; the first steps may oscillate, hence the long window. On the
+    // hypar (kernel 93, 93 quadratics) 195 of 240 starts sat on plateaus for 45 of their 60
+    // steps.
+    constexpr int kStallWindow = 10;
+    if (it >= kStallWindow) {
+      const auto split = history.end() - kStallWindow;
+      if (*std::min_element(split, history.end()) > 0.9 * *std::min_element(history.begin(), split)) break;
+    }
+    // Minimum-norm Gauss-Newton step on [q(c); |c|^2 - 1] = 0.
+    Eigen::MatrixXd A(p + 1, k);
+    Eigen::VectorXd b(p + 1);
+    A.topRows(p) = 2.0 * Hc.transpose();
+    A.row(p) = 2.0 * c.transpose();
+    b.head(p) = q;
+    b[p] = c.squaredNorm() - 1.0;
+    const Eigen::VectorXd dc = A.completeOrthogonalDecomposition().solve(b);
+    c -= dc;
+    c.normalize();
+    if (dc.norm() < 1e-15) break;
+  }
+  r.ok = quadratics(H, c).lpNorm<Eigen::Infinity>() <= accept;
 }
 
 // A one-dimensional kernel with no second-order condition is itself the one tangent line.
@@ -111,60 +157,46 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
   }
   const double accept = options.quadratic_tolerance * scale;
 
+  // The starts are independent: they run in batches on up to two threads when the
+  // quadratics are large enough to pay for a thread (hypar.svg: k = p = 93, ~1 M flops per
+  // iteration), and their results are taken in start order, so the lines found are the
+  // same, in the same order, as one thread would find them.
   Starts gen{options.seed};
+  const int threads = static_cast<double>(k) * k * p >= 1e5 ? 2 : 1;
+  const int batch = 4 * threads;
   std::vector<Eigen::VectorXd> found;
-  for (int s = 0; s < options.starts && static_cast<int>(found.size()) < options.max_lines; ++s) {
-    Eigen::VectorXd c = k == 1 ? Eigen::VectorXd::Ones(1) : gen.unit(k);
-    bool ok = false;
-    Eigen::MatrixXd Hc(k, p);  // column j: H_j c, for both q_j = c . H_j c and the Jacobian row 2 (H_j c)^T
-    std::vector<double> history;  // |q|_inf per iteration
-    for (int it = 0; it < 60; ++it) {
-      for (int j = 0; j < p; ++j) Hc.col(j).noalias() = H[j] * c;
-      const Eigen::VectorXd q = Hc.transpose() * c;
-      history.push_back(q.lpNorm<Eigen::Infinity>());
-      if (history.back() <= 1e-3 * accept) {
-        ok = true;
-        break;
-      }
-      // A plateau: the least |q| of the last kStallWindow iterations is not 10% below the least
-      // before them. A start that converges, even linearly at a singular solution (ratio 1/2
-      // per step), falls far more; the first steps may oscillate, hence the long window. On the
-      // hypar (kernel 93, 93 quadratics) 195 of 240 starts sat on plateaus for 45 of their 60
-      // steps.
-      constexpr int kStallWindow = 10;
-      if (it >= kStallWindow) {
-        const auto split = history.end() - kStallWindow;
-        if (*std::min_element(split, history.end()) > 0.9 * *std::min_element(history.begin(), split)) break;
-      }
-      // Minimum-norm Gauss-Newton step on [q(c); |c|^2 - 1] = 0.
-      Eigen::MatrixXd A(p + 1, k);
-      Eigen::VectorXd b(p + 1);
-      A.topRows(p) = 2.0 * Hc.transpose();
-      A.row(p) = 2.0 * c.transpose();
-      b.head(p) = q;
-      b[p] = c.squaredNorm() - 1.0;
-      const Eigen::VectorXd dc = A.completeOrthogonalDecomposition().solve(b);
-      c -= dc;
-      c.normalize();
-      if (dc.norm() < 1e-15) break;
+  for (int first = 0; first < options.starts && static_cast<int>(found.size()) < options.max_lines; first += batch) {
+    const int count = std::min(batch, options.starts - first);
+    std::vector<StartResult> results(count);
+    for (int i = 0; i < count; ++i) results[i].c = k == 1 ? Eigen::VectorXd::Ones(1) : gen.unit(k);
+    const auto run = [&](int from) {
+      for (int i = from; i < count; i += threads) converge_start(H, accept, results[i]);
+    };
+    if (threads > 1) {
+      std::thread helper(run, 1);
+      run(0);
+      helper.join();
+    } else {
+      run(0);
     }
-    if (!ok) ok = quadratics(H, c).lpNorm<Eigen::Infinity>() <= accept;
-    if (!ok) continue;
-    if (k == 1) c = Eigen::VectorXd::Ones(1);
-    bool seen = false;
-    for (const auto& f : found) seen = seen || 1.0 - std::abs(f.dot(c)) < options.same_line;
-    if (seen) continue;
-    found.push_back(c);
-    TangentLine line;
-    Eigen::VectorXd d = cone.kernel * c;
-    Eigen::Index big;
-    d.cwiseAbs().maxCoeff(&big);
-    if (d[big] < 0) d = -d;
-    line.direction = d.normalized();
-    line.quadratic_residual = quadratics(H, c).lpNorm<Eigen::Infinity>() / hmax;
-    line.isolated = tangent_rank(H, c, 1e-6 * hmax) >= k - 1;
-    cone.lines.push_back(line);
-    if (k == 1) break;
+    for (int i = 0; i < count && static_cast<int>(found.size()) < options.max_lines; ++i) {
+      if (!results[i].ok) continue;
+      Eigen::VectorXd c = k == 1 ? Eigen::VectorXd::Ones(1) : results[i].c;
+      bool seen = false;
+      for (const auto& f : found) seen = seen || 1.0 - std::abs(f.dot(c)) < options.same_line;
+      if (seen) continue;
+      found.push_back(c);
+      TangentLine line;
+      Eigen::VectorXd d = cone.kernel * c;
+      Eigen::Index big;
+      d.cwiseAbs().maxCoeff(&big);
+      if (d[big] < 0) d = -d;
+      line.direction = d.normalized();
+      line.quadratic_residual = quadratics(H, c).lpNorm<Eigen::Infinity>() / hmax;
+      line.isolated = tangent_rank(H, c, 1e-6 * hmax) >= k - 1;
+      cone.lines.push_back(line);
+      if (k == 1) return cone;
+    }
   }
   return cone;
 }
