@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -180,6 +181,42 @@ TEST(CorrugatedTessellation, Fig3_9MixedTessellationIsNotRigid) {
   EXPECT_TRUE(found_a) << "no sheet with all nine windows rigid (Fig 3-9(a)/(c))";
   EXPECT_TRUE(found_b) << "no sheet like Fig 3-9(b)";
   EXPECT_GT(mixed, 0);
+}
+
+// The header's claims on the windows: the corner windows are translated copies of unit P,
+// windows (1, 0) and (1, 2) of unit Q (corrugated_unit), with the sheet's letters on the
+// unit's interior creases; p_shaped follows the central panel's angle.
+TEST(CorrugatedTessellation, WindowsAreTranslatedUnits) {
+  const CorrugatedParams params;
+  const auto options = p_options();
+  const auto choices = consistent_choices(options);
+  ASSERT_FALSE(choices.empty());
+  std::array<std::vector<A>, 4> corners;
+  for (int k = 0; k < 4; ++k) corners[k] = options[choices.back()[k]].letters;
+  const CreasePattern sheet = corrugated_tessellation(params, corners);
+  for (const auto& w : corrugated_tessellation_windows()) {
+    const CreasePattern wp = corrugated_tessellation_window(params, sheet, w.wa, w.wb);
+    // Central panel angle at the window's first central vertex (node (1, 1) of the window).
+    const Eigen::Vector3d c = wp.vertices[5], ui = wp.vertices[6] - c, vj = wp.vertices[9] - c;
+    const double angle = std::acos(ui.normalized().dot(vj.normalized()));
+    const bool alpha_like = std::fabs(angle - params.alpha) < 1e-12 || std::fabs(angle - (std::numbers::pi - params.alpha)) < 1e-12;
+    EXPECT_EQ(alpha_like, w.p_shaped) << w.wa << "," << w.wb;
+    const bool corner = w.wa % 2 == 0 && w.wb % 2 == 0, q_copy = w.wa == 1 && w.wb != 1;
+    if (!corner && !q_copy) continue;
+    const CorrugatedUnit unit = corner ? CorrugatedUnit::P : CorrugatedUnit::Q;
+    std::vector<A> interior;
+    for (int e : corrugated_interior_edges(unit)) interior.push_back(wp.assignments[e]);
+    const CreasePattern ref = corrugated_unit(unit, params, interior);
+    ASSERT_EQ(ref.num_vertices(), wp.num_vertices());
+    for (int v = 0; v < ref.num_vertices(); ++v)
+      EXPECT_LE(((wp.vertices[v] - wp.vertices[0]) - (ref.vertices[v] - ref.vertices[0])).norm(), 1e-12)
+          << w.wa << "," << w.wb << " vertex " << v;
+    for (int e = 0; e < ref.num_edges(); ++e) EXPECT_EQ(wp.assignments[e], ref.assignments[e]) << w.wa << "," << w.wb;
+    if (corner) {
+      const int k = w.wa / 2 + 2 * (w.wb / 2);
+      EXPECT_EQ(interior, corners[k]) << "corner " << k;
+    }
+  }
 }
 
 TEST(CorrugatedTessellation, BadInputNamesThePlace) {
