@@ -21,7 +21,10 @@ BorderedDeterminantMonitor::Step BorderedDeterminantMonitor::step(const Eigen::M
   }
   // Divide and conquer: at every point of every traced branch, on Jacobians of a few hundred
   // columns Jacobi's one-sided rotations took most of a check's time (hypar.svg: 63%).
-  Eigen::BDCSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  // Thin factors hold everything used here (n-1 left vectors, the last right vector) when
+  // m >= n; the full m x m U cost a quarter of a hypar.svg check.
+  const unsigned int factors = J.rows() >= n ? Eigen::ComputeThinU | Eigen::ComputeThinV : Eigen::ComputeFullU | Eigen::ComputeFullV;
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(J, factors);
   const Eigen::VectorXd& s = svd.singularValues();
   if (!(s[n - 2] > dof_tolerance_ * s[0])) {  // DOF above 1 here: the point itself is singular
     ready_ = false;
