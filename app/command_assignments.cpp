@@ -58,7 +58,10 @@ void add_assignments_command(CLI::App& app) {
     j["complete"] = r.complete;
     j["search_steps"] = r.search_steps;
     j["assignments"] = r.assignments;
-    j["classes"] = r.class_count;
+    // A stopped search has seen only the representatives it reached: the class count is unknown
+    // (null), and the representatives reached are counted apart.
+    j["classes"] = r.complete ? nlohmann::ordered_json(r.class_count) : nlohmann::ordered_json(nullptr);
+    if (!r.complete) j["classes_reached"] = r.class_count;
     j["classes_with_verdict"] = r.verdicts;
     j["foldable_classes"] = r.foldable_classes;
     j["not_foldable_classes"] = r.not_foldable_classes;
@@ -88,8 +91,11 @@ void add_assignments_command(CLI::App& app) {
     }
     std::cout << "  " << r.creases.size() << " creases; symmetry group of order " << r.symmetry_order << " ("
               << r.symmetry_rotations << " rotations" << (a->no_symmetry ? ", not used" : "") << "), and the global flip\n";
-    std::cout << "  " << r.assignments << " flat-folding assignments" << (r.complete ? "" : " (search stopped: at least this many)")
-              << " in " << r.class_count << " classes\n";
+    if (r.complete)
+      std::cout << "  " << r.assignments << " flat-folding assignments in " << r.class_count << " classes\n";
+    else
+      std::cout << "  search stopped: at least " << r.assignments << " flat-folding assignments; class count unknown ("
+                << r.class_count << " classes' representatives reached)\n";
     std::cout << "  verdicts on " << r.verdicts << " classes: " << r.foldable_classes << " rigidly foldable, "
               << r.not_foldable_classes << " not, " << r.undecided_classes << " undecided\n";
     std::cout << "  creases (edge indices, the order of the letters):";
@@ -101,7 +107,7 @@ void add_assignments_command(CLI::App& app) {
       if (c.verdict_run) std::cout << "  " << to_string(c.verdict) << ", DOF " << c.dof << ": " << c.reason;
       std::cout << "\n";
     }
-    if (static_cast<long>(r.classes.size()) < r.class_count)
+    if (r.complete && static_cast<long>(r.classes.size()) < r.class_count)
       std::cout << "  ... " << r.class_count - static_cast<long>(r.classes.size()) << " more classes (raise --list)\n";
     char line[80];
     std::snprintf(line, sizeof line, "  %.3f s\n", r.seconds);

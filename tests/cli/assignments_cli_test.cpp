@@ -37,6 +37,21 @@ TEST(AssignmentsCli, UnitPHasTenClassesFourRigid) {
   EXPECT_NE(text.out.find("7 more classes"), std::string::npos) << text.out;
 }
 
+// A search stopped by --max-assignments knows no class count: null, never a number that
+// reads as the answer (it printed 0 classes for a 4x4 square-twist tessellation).
+TEST(AssignmentsCli, StoppedSearchGivesNoClassCount) {
+  const auto r = test::run_command(test::cli() + " assignments " + kBundled + "corrugated_p_rigid.fold --json --max-assignments 5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["complete"].get<bool>());
+  EXPECT_EQ(j["assignments"].get<long>(), 5);
+  EXPECT_TRUE(j["classes"].is_null());
+  EXPECT_LE(j["classes_reached"].get<long>(), 5);
+  const auto text = test::run_command(test::cli() + " assignments " + kBundled + "corrugated_p_rigid.fold --max-assignments 5");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("class count unknown"), std::string::npos) << text.out;
+}
+
 TEST(AssignmentsCli, NamesTheVertexOffKawasaki) {
   const auto r = test::run_command(test::cli() + " assignments " + kBundled + "miura_3x3_perturbed.fold --json");
   ASSERT_EQ(r.status, 0) << r.err;
