@@ -1,3 +1,6 @@
+// rigidfold waterbomb --sweep-n A..B [--sweep-split-deg B1,B2] [--sweep-k-ratio R1,R2] --theta0-deg T [--json] [--plot DIR]
+//   a design sweep (design/waterbomb/waterbomb_sweep.hpp): the CSV table on stdout (or JSON),
+//   with --plot DIR also DIR/sweep.csv and DIR/sweep.png.
 // rigidfold waterbomb --n N [--split-deg B] --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
 //                    [--curve FILE.csv] [--plot DIR] [--samples K] [--target-switching-force F]
 // Bistability of the symmetric waterbomb base (seed 004): every equilibrium of the spring
@@ -43,6 +46,7 @@
 #include "design/waterbomb/waterbomb_curve.hpp"
 #include "design/waterbomb/waterbomb_rest_design.hpp"
 #include "design/waterbomb/waterbomb_switching.hpp"
+#include "design/waterbomb/waterbomb_sweep.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/math/number_text.hpp"
 #include "kernel/pattern/input_error.hpp"
@@ -93,7 +97,7 @@ std::string plot_script() {
 // figure names its inputs as waterbomb.csv and waterbomb.json, the files written beside it)
 // and returns its bytes. Throws std::runtime_error when Python or the script fails (an
 // installation problem, not bad input: exit 1), with the script's message.
-std::string draw_plot(const std::string& csv, const std::string& summary_json) {
+std::string draw_plot(const std::string& csv, const std::string& summary_json, bool sweep = false) {
   const std::string script = plot_script();
   char name[] = "/tmp/rigidfold_waterbomb_plot_XXXXXX";
   if (!::mkdtemp(name)) throw std::runtime_error("--plot: cannot create a temporary directory");
@@ -101,13 +105,14 @@ std::string draw_plot(const std::string& csv, const std::string& summary_json) {
   struct Cleanup {
     std::string dir;
     ~Cleanup() {
-      for (const char* f : {"waterbomb.csv", "waterbomb.json", "waterbomb.png", "plot.log"})
+      for (const char* f : {"waterbomb.csv", "waterbomb.json", "waterbomb.png", "sweep.csv", "plot.log"})
         ::unlink((dir + "/" + f).c_str());
       ::rmdir(dir.c_str());
     }
   } cleanup{dir};
-  for (const auto& [file, text] : {std::pair<std::string, const std::string*>{"waterbomb.csv", &csv},
+  for (const auto& [file, text] : {std::pair<std::string, const std::string*>{sweep ? "sweep.csv" : "waterbomb.csv", &csv},
                                    std::pair<std::string, const std::string*>{"waterbomb.json", &summary_json}}) {
+    if (sweep && file == "waterbomb.json") continue;
     std::ofstream out(dir + "/" + file, std::ios::binary);
     out << *text;
     if (!out) throw std::runtime_error("--plot: cannot write the temporary " + file);
@@ -120,6 +125,7 @@ std::string draw_plot(const std::string& csv, const std::string& summary_json) {
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   std::vector<std::string> args{"/usr/bin/python3", script, "waterbomb.csv", "waterbomb.json", "--out", "waterbomb.png"};
+  if (sweep) args = {"/usr/bin/python3", script, "--sweep", "sweep.csv", "--out", "waterbomb.png"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -138,6 +144,103 @@ std::string draw_plot(const std::string& csv, const std::string& summary_json) {
   return png;
 }
 
+// A list flag: "A..B" (integers, step 1) when `range` is allowed, else numbers separated by commas.
+std::vector<double> number_list(const std::string& text, const char* flag, bool range) {
+  std::vector<double> out;
+  auto number = [&](const std::string& t) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(t, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (t.empty() || used != t.size() || !std::isfinite(x))
+      throw InputError(flag, "'" + t + "' is not a finite number (lists: a,b,c" + (range ? std::string(" or A..B") : std::string()) + ")");
+    return x;
+  };
+  if (const auto dots = text.find(".."); range && dots != std::string::npos) {
+    const double lo = number(text.substr(0, dots)), hi = number(text.substr(dots + 2));
+    if (lo != std::floor(lo) || hi != std::floor(hi) || hi < lo || hi - lo > 1000)
+      throw InputError(flag, "a range A..B needs integers A <= B, got " + text);
+    for (double x = lo; x <= hi; ++x) out.push_back(x);
+    return out;
+  }
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    out.push_back(number(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+    if (out.size() > 1000) throw InputError(flag, "more than 1000 values");
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+template <class Args>
+void run_sweep(const Args& a, bool have_theta0) {
+  if (!have_theta0) throw InputError("--theta0-deg", "is required for a sweep");
+  waterbomb::SweepSpec spec;
+  for (double x : number_list(a.sweep_n, "--sweep-n", true)) {
+    if (x != std::floor(x) || x < 3 || x > waterbomb::kMaxSweepDegree)
+      throw InputError("--sweep-n", "each degree must be an integer in [3, " + std::to_string(waterbomb::kMaxSweepDegree) +
+                                        "], got " + round_trip_text(x));
+    spec.n.push_back(static_cast<int>(x));
+  }
+  spec.split_deg = number_list(a.sweep_split, "--sweep-split-deg", false);
+  spec.k_ratio = number_list(a.sweep_k, "--sweep-k-ratio", false);
+  spec.theta0_deg = a.theta0_deg;
+  OutputSet outputs;
+  std::string table_path, png_path;
+  if (!a.plot.empty()) {
+    outputs.add_output_directory("--plot", a.plot);
+    const std::string dir = a.plot.back() == '/' ? a.plot : a.plot + "/";
+    table_path = dir + "sweep.csv";
+    png_path = dir + "sweep.png";
+    outputs.add_output("--plot", table_path);
+    outputs.add_output("--plot", png_path);
+  }
+  std::vector<waterbomb::SweepRow> rows;
+  try {
+    rows = waterbomb::waterbomb_sweep(spec);
+  } catch (const InputError& e) {
+    const std::string& p = e.place();
+    throw InputError(p == "n" || p == "rows" ? "--sweep-n" : p == "split_deg" ? "--sweep-split-deg" : p == "k_ratio" ? "--sweep-k-ratio" : "--theta0-deg",
+                     e.message());
+  }
+  const std::string csv = waterbomb::sweep_csv(rows);
+  if (!a.plot.empty()) {
+    const std::string png = draw_plot(csv, std::string(), true);
+    outputs.stage(table_path, csv);
+    outputs.stage(png_path, png);
+  }
+  outputs.commit();
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["theta0_deg"] = spec.theta0_deg;
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& r : rows) {
+      nlohmann::ordered_json row = {{"n", r.n}, {"split_deg", r.split_deg}, {"k_ratio", r.k_ratio}, {"status", r.status}};
+      if (r.status == "ok") {
+        row["stable_states"] = r.stable_states;
+        row["state2_theta_deg"] = number_or_null(r.state2_theta_deg);
+        row["state2_gamma_m_deg"] = number_or_null(r.state2_gamma_m_deg);
+        row["state2_gamma_v_deg"] = number_or_null(r.state2_gamma_v_deg);
+        row["state2_energy"] = number_or_null(r.state2_energy);
+        row["barrier_from_rest"] = number_or_null(r.barrier_from_rest);
+        row["barrier_from_state2"] = number_or_null(r.barrier_from_state2);
+        row["switching_force"] = number_or_null(r.switching_force);
+      }
+      list.push_back(row);
+    }
+    j["rows"] = list;
+    std::cout << document_text(j) << "\n";
+    return;
+  }
+  std::cout << csv;
+  if (!a.plot.empty()) std::cerr << "wrote " << table_path << ", " << png_path << "\n";
+}
+
 }  // namespace
 
 void add_waterbomb_command(CLI::App& app) {
@@ -151,9 +254,10 @@ void add_waterbomb_command(CLI::App& app) {
     int samples = 181;
     double target_switching_force = 0;
     double target_second_state_deg = 0;
+    std::string sweep_n, sweep_split = "0", sweep_k = "1";
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180")->required();
+  auto* n_opt = cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180 (required unless --sweep-n)");
   auto* theta0_opt = cmd->add_option("--theta0-deg", a->theta0_deg,
                                      "rest state: angle between a valley crease and the axis, degrees in [0, 180 - 180/n] "
                                      "(required unless --target-second-state-deg designs it)");
@@ -176,7 +280,22 @@ void add_waterbomb_command(CLI::App& app) {
   auto* second = cmd->add_option("--target-second-state-deg", a->target_second_state_deg,
                                   "design: the rest angle theta0 (replaces --theta0-deg) whose second stable state lies at this theta, "
                                   "degrees in (90, 180 - 180/n); plain base only");
-  cmd->callback([a, ratio, samples, target, split, theta0_opt, second] {
+  auto* sweep_n = cmd->add_option("--sweep-n", a->sweep_n,
+                                   "design sweep: degrees n as A..B or a comma list (3..36); prints the CSV table "
+                                   "(one checked analysis per n, split width and ratio at --theta0-deg)");
+  auto* sweep_split = cmd->add_option("--sweep-split-deg", a->sweep_split, "sweep: split widths b in degrees, comma list (0 = plain base; default 0)");
+  auto* sweep_k = cmd->add_option("--sweep-k-ratio", a->sweep_k, "sweep: stiffness ratios k_m / k_v, comma list (default 1)");
+  cmd->callback([a, ratio, samples, target, split, theta0_opt, second, n_opt, sweep_n, sweep_split, sweep_k, km] {
+    if (sweep_n->count() > 0) {
+      if (n_opt->count() > 0 || split->count() > 0 || ratio->count() > 0 || km->count() > 0 || !a->curve.empty() ||
+          target->count() > 0 || second->count() > 0 || samples->count() > 0)
+        throw InputError("--sweep-n", "a sweep takes --theta0-deg, --sweep-split-deg, --sweep-k-ratio, --json and --plot only");
+      run_sweep(*a, theta0_opt->count() > 0);
+      return;
+    }
+    if (sweep_split->count() > 0 || sweep_k->count() > 0)
+      throw InputError(sweep_split->count() > 0 ? "--sweep-split-deg" : "--sweep-k-ratio", "needs --sweep-n");
+    if (n_opt->count() == 0) throw InputError("--n", "is required (or --sweep-n for a design sweep)");
     if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
     const bool split_fold = split->count() > 0;
     const bool design_rest = second->count() > 0;

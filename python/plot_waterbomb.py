@@ -16,6 +16,11 @@ force curve in two (the path has a corner there: the force jumps).
 CSV columns (as written by rigidfold waterbomb --curve):
     theta_deg,gamma_m_deg,gamma_v_deg,energy,height,deflection,force,force_closed_form,
     min_reduced_hessian_eigenvalue,stable
+Sweep mode (the table of rigidfold waterbomb --sweep-n ... --plot DIR):
+    /usr/bin/python3 python/plot_waterbomb.py --sweep sweep.csv --out sweep.png
+Left: the second stable state's theta against n, one line per (split width, k ratio); right:
+the symmetric-path barrier from the rest state against n. Rows without numbers are skipped.
+
 Uses matplotlib's Agg backend (no display needed).
 """
 import argparse
@@ -63,7 +68,57 @@ def runs(samples, key):
     return groups
 
 
+SWEEP_COLUMNS = ["n", "split_deg", "k_ratio", "theta0_deg", "status", "stable_states", "state2_theta_deg",
+                 "state2_gamma_m_deg", "state2_gamma_v_deg", "state2_energy", "barrier_from_rest",
+                 "barrier_from_state2", "switching_force"]
+
+
+def main_sweep(argv):
+    ap = argparse.ArgumentParser(description="waterbomb design sweep")
+    ap.add_argument("--sweep", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args(argv)
+    try:
+        with open(a.sweep, newline="") as f:
+            rows = list(csv.reader(f))
+        if not rows or rows[0] != SWEEP_COLUMNS:
+            raise ValueError(f"{a.sweep}: header must be {','.join(SWEEP_COLUMNS)}")
+        table = [dict(zip(SWEEP_COLUMNS, r)) for r in rows[1:]]
+    except (OSError, ValueError) as e:
+        print(f"plot_waterbomb: {e}", file=sys.stderr)
+        return 2
+    series = {}
+    for r in table:
+        if r["status"] != "ok" or not r["state2_theta_deg"]:
+            continue
+        key = (float(r["split_deg"]), float(r["k_ratio"]))
+        series.setdefault(key, []).append((int(r["n"]), float(r["state2_theta_deg"]),
+                                           float(r["barrier_from_rest"]) if r["barrier_from_rest"] else float("nan")))
+    fig, (ax_t, ax_b) = plt.subplots(1, 2, figsize=(11, 4.2))
+    for (b, k), pts in sorted(series.items()):
+        pts.sort()
+        label = ("plain" if b == 0 else f"b = {b:g} deg") + f", k_m/k_v = {k:g}"
+        ax_t.plot([p[0] for p in pts], [p[1] for p in pts], "o-", ms=3, lw=1.2, label=label)
+        ax_b.plot([p[0] for p in pts], [p[2] for p in pts], "o-", ms=3, lw=1.2, label=label)
+    ax_t.axhline(90.0, color="0.7", lw=0.8, ls=":")
+    ax_t.set_xlabel("degree n")
+    ax_t.set_ylabel("second stable state theta (deg)")
+    ax_t.set_title("second stable state")
+    ax_b.set_xlabel("degree n")
+    ax_b.set_ylabel("barrier from the rest state (symmetric path)")
+    ax_b.set_title("energy barrier over the flat state")
+    ax_t.legend(fontsize=7)
+    t0 = table[0]["theta0_deg"] if table else "?"
+    fig.suptitle(f"waterbomb design sweep, rest theta0 = {t0} deg")
+    fig.tight_layout()
+    stamp_inputs(fig, [a.sweep])
+    fig.savefig(a.out, dpi=120)
+    return 0
+
+
 def main():
+    if "--sweep" in sys.argv[1:]:
+        return main_sweep(sys.argv[1:])
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("curve")
     ap.add_argument("summary")
