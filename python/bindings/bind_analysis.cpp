@@ -180,7 +180,9 @@ void bind_analysis(py::module_& m) {
         d["symmetry_order"] = r.symmetry_order;
         d["symmetry_rotations"] = r.symmetry_rotations;
         d["assignments"] = r.assignments;
-        d["class_count"] = r.class_count;
+        // As the CLI: a stopped search knows no class count (None), only the representatives reached.
+        d["class_count"] = r.complete ? py::object(py::int_(r.class_count)) : py::object(py::none());
+        d["classes_reached"] = r.class_count;
         d["verdicts"] = r.verdicts;
         d["foldable_classes"] = r.foldable_classes;
         d["not_foldable_classes"] = r.not_foldable_classes;
@@ -197,7 +199,8 @@ void bind_analysis(py::module_& m) {
       py::arg("max_verdicts") = 100'000L, py::arg("max_listed") = 1000, py::arg("source") = "PATTERN",
       "Every M-V assignment of the creases (M, V, U edges) that folds each interior vertex flat, in classes "
       "under the pattern's symmetry group and the global M/V flip, each class with its rigid-foldability verdict "
-      "(as `rigidfold assignments`). Returns a dict: assignments, class_count, foldable_classes, "
+      "(as `rigidfold assignments`). Returns a dict: assignments, class_count (None when the search was stopped: "
+      "classes_reached then counts the representatives it reached), foldable_classes, "
       "not_foldable_classes, undecided_classes, complete, creases (edge of each letter position), classes "
       "[{letters, orbit_size, verdict_class, is_proof, dof, reason}], blocking_vertex/blocking_reason (a vertex "
       "off Kawasaki or of odd degree; -1 if none), symmetry_order, seconds.");

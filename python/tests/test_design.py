@@ -31,6 +31,15 @@ def test_square_twist_assignments_match_cli(cli):
         (c["letters"], c["orbit_size"], c["verdict"], c["dof"]) for c in expected["listed"]]
 
 
+def test_stopped_assignment_search_has_no_class_count(cli):
+    path = bundled("corrugated_p_rigid.fold")
+    r = rigidfold.enumerate_assignments(rigidfold.load(path), max_assignments=5)
+    expected = cli("assignments", path, "--max-assignments", "5")
+    assert r["complete"] is False and expected["complete"] is False
+    assert r["class_count"] is None and expected["classes"] is None
+    assert r["classes_reached"] == expected["classes_reached"]
+
+
 def test_waterbomb_bistability_matches_cli(cli):
     r = rigidfold.waterbomb_bistability(4, math.radians(60))
     expected = cli("waterbomb", "--n", "4", "--theta0-deg", "60")
