@@ -1,5 +1,9 @@
 // rigidfold energy PATTERN --rest REST.json|REST.fold [--k-m K] [--k-v K] [--k-u K | --stiffness SPEC.json]
 //                  [--starts N] [--seed S] [--json]
+// --load SPEC.json: the vertex held at a height above the plane of its supports
+// (kernel/energy/load_spec.hpp, vertex_height_control.hpp): the loaded equilibria reached from
+// the rest state and from every stable state, each converged (KKT residual <= 1e-12) before
+// it is printed, with its reaction force and stability; none converged: exit 3.
 // --stiffness SPEC.json: one stiffness per crease (kernel/energy/stiffness_spec.hpp: default,
 // by letter, by edge index, or from a flexure material), errors naming the JSON path.
 // Each state also says whether it keeps the M/V letters and whether panels pass through each
@@ -9,6 +13,7 @@
 // the letters, each minimised on the loop-closure manifold with no symmetry imposed; every
 // state printed has passed its checks (closure <= 1e-12 rad, stationarity, reduced Hessian
 // positive definite).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -22,6 +27,10 @@
 #include "kernel/energy/crease_spring_states.hpp"
 #include "kernel/energy/rest_angles.hpp"
 #include "kernel/energy/stiffness_spec.hpp"
+#include "kernel/energy/load_spec.hpp"
+#include "kernel/energy/vertex_height_control.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
@@ -32,7 +41,7 @@ namespace rigidfold::cli {
 void add_energy_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("energy", "Stable states of a pattern with crease springs (multistart, no symmetry imposed)");
   struct Args {
-    std::string pattern, rest, stiffness;
+    std::string pattern, rest, stiffness, load;
     double k_m = 1, k_v = 1, k_u = 1;
     int starts = 24;
     std::uint64_t seed = 1;
@@ -51,7 +60,10 @@ void add_energy_command(CLI::App& app) {
   cmd->add_option("--starts", a->starts, "random starts besides the rest state (0..1000, default 24)");
   cmd->add_option("--seed", a->seed, "seed of the random starts (default 1)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
-  cmd->callback([a, km, kv, ku, spec] {
+  auto* load_opt = cmd->add_option("--load", a->load,
+                                   "vertex height control: JSON {vertex, height, supports (default: its valley creases)}; "
+                                   "prints the loaded equilibria and their reaction forces");
+  cmd->callback([a, km, kv, ku, spec, load_opt] {
     if (spec->count() > 0 && (km->count() > 0 || kv->count() > 0 || ku->count() > 0))
       throw InputError("--stiffness", "replaces --k-m, --k-v and --k-u: give one or the other");
     const CreasePattern p = read_pattern(a->pattern);
@@ -79,11 +91,61 @@ void add_energy_command(CLI::App& app) {
       throw;
     }
     const StableStateSearch& s = found.search;
+    // The loaded equilibria (before anything is printed).
+    nlohmann::ordered_json loaded;
+    if (load_opt->count() > 0) {
+      const VertexHeightLoad load = read_load_spec(a->load, p, t);
+      const ClosureSystem system(p, t);
+      const CreaseSprings springs = make_crease_springs(
+          p, problem.edge_stiffness.size() ? problem.edge_stiffness : stiffness_by_assignment(p, problem.stiffness), problem.rest);
+      std::vector<Eigen::VectorXd> starts{system.unknowns_from_edges(problem.rest)};
+      for (const auto& f : s.states) starts.push_back(system.unknowns_from_edges(f.state.edge_angles));
+      std::vector<HeightControlledEquilibrium> states;
+      double best = INFINITY;
+      for (const auto& x0 : starts) {
+        HeightControlledEquilibrium eq = vertex_height_equilibrium(p, system, t, springs, load, x0);
+        if (!eq.converged) {
+          best = std::min(best, eq.constraint_residual);
+          continue;
+        }
+        bool seen = false;
+        for (const auto& other : states) seen = seen || (other.edge_angles - eq.edge_angles).lpNorm<Eigen::Infinity>() <= 1e-6;
+        if (!seen) states.push_back(std::move(eq));
+      }
+      if (states.empty())
+        throw NoAnswerError("--load: no loaded equilibrium converged from " + std::to_string(starts.size()) +
+                                " starts (the rest state and each stable state; smallest constraint residual)",
+                            best);
+      std::sort(states.begin(), states.end(), [](const auto& x, const auto& y) { return x.energy < y.energy; });
+      loaded["vertex"] = load.vertex;
+      loaded["height"] = load.height;
+      loaded["supports"] = load.support_edges;
+      nlohmann::ordered_json list = nlohmann::ordered_json::array();
+      for (const auto& eq : states) {
+        nlohmann::ordered_json e;
+        e["energy"] = eq.energy;
+        e["force"] = eq.force;
+        std::vector<double> reactions(eq.support_reactions.data(), eq.support_reactions.data() + eq.support_reactions.size());
+        e["support_reactions"] = reactions;
+        e["constraint_residual"] = eq.constraint_residual;
+        e["stationarity_residual"] = eq.stationarity_residual;
+        e["min_reduced_hessian_eigenvalue"] = std::isfinite(eq.min_eigenvalue) ? nlohmann::ordered_json(eq.min_eigenvalue)
+                                                                                 : nlohmann::ordered_json(nullptr);
+        e["stable"] = eq.stable;
+        nlohmann::ordered_json angles = nlohmann::ordered_json::array();
+        for (int ed = 0; ed < p.num_edges(); ++ed)
+          angles.push_back(t.edge_is_hinge[ed] ? nlohmann::ordered_json(to_degrees(eq.edge_angles[ed])) : nlohmann::ordered_json(nullptr));
+        e["fold_angles_deg"] = angles;
+        list.push_back(e);
+      }
+      loaded["states"] = list;
+    }
 
     nlohmann::ordered_json j;
     j["file"] = a->pattern;
     j["rest"] = a->rest;
     j.update(crease_spring_states_json(p, t, problem, found));
+    if (!loaded.is_null()) j["loaded"] = loaded;
     if (a->json) {
       std::cout << document_text(j) << "\n";
       return;
@@ -111,6 +173,17 @@ void add_energy_command(CLI::App& app) {
           ++shown;
         }
       std::cout << (shown == 16 ? " ... (use --json)" : "") << "\n";
+    }
+    if (!loaded.is_null()) {
+      std::snprintf(line, sizeof line, "  loaded: vertex %d held at height %.12g above its %zu supports\n", loaded["vertex"].get<int>(),
+                    loaded["height"].get<double>(), loaded["supports"].size());
+      std::cout << line;
+      for (const auto& e : loaded["states"]) {
+        std::snprintf(line, sizeof line, "    energy %.12g, force %.12g (push > 0)%s; constraint residual %.1e\n",
+                      e["energy"].get<double>(), e["force"].get<double>(), e["stable"].get<bool>() ? ", stable" : ", unstable",
+                      e["constraint_residual"].get<double>());
+        std::cout << line;
+      }
     }
   });
 }
