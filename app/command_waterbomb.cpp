@@ -11,6 +11,8 @@
 // --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
 // every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
 // in the split fold's contact limits. No switching force or design for split folds yet.
+// --target-switching-force F --design theta0 (plain base, replaces --theta0-deg): the rest angle
+// whose switching force is F (waterbomb_rest_design.hpp), confirmed on the general model.
 // --target-second-state-deg T2 (plain base, replaces --theta0-deg): the rest angle theta0 whose
 // second stable state lies at T2 (design/waterbomb/waterbomb_rest_design.hpp), then the whole
 // analysis at that theta0; the design is printed only when a checked stable state lies within
@@ -255,6 +257,7 @@ void add_waterbomb_command(CLI::App& app) {
     double target_switching_force = 0;
     double target_second_state_deg = 0;
     std::string sweep_n, sweep_split = "0", sweep_k = "1";
+    std::string design = "k_m";
   };
   auto a = std::make_shared<Args>();
   auto* n_opt = cmd->add_option("--n", a->n, "mountain (= valley) creases, 3 <= n <= 180 (required unless --sweep-n)");
@@ -280,16 +283,20 @@ void add_waterbomb_command(CLI::App& app) {
   auto* second = cmd->add_option("--target-second-state-deg", a->target_second_state_deg,
                                   "design: the rest angle theta0 (replaces --theta0-deg) whose second stable state lies at this theta, "
                                   "degrees in (90, 180 - 180/n); plain base only");
+  auto* design_opt = cmd->add_option("--design", a->design,
+                                     "what --target-switching-force designs: k_m (default; at --theta0-deg) or theta0 (the rest "
+                                     "angle, replacing --theta0-deg; k as given)");
   auto* sweep_n = cmd->add_option("--sweep-n", a->sweep_n,
                                    "design sweep: degrees n as A..B or a comma list (3..36); prints the CSV table "
                                    "(one checked analysis per n, split width and ratio at --theta0-deg)");
   auto* sweep_split = cmd->add_option("--sweep-split-deg", a->sweep_split, "sweep: split widths b in degrees, comma list (0 = plain base; default 0)");
   auto* sweep_k = cmd->add_option("--sweep-k-ratio", a->sweep_k, "sweep: stiffness ratios k_m / k_v, comma list (default 1)");
-  cmd->callback([a, ratio, samples, target, split, theta0_opt, second, n_opt, sweep_n, sweep_split, sweep_k, km] {
+  cmd->callback([a, ratio, samples, target, split, theta0_opt, second, n_opt, sweep_n, sweep_split, sweep_k, km, design_opt] {
     if (sweep_n->count() > 0) {
       if (n_opt->count() > 0 || split->count() > 0 || ratio->count() > 0 || km->count() > 0 || !a->curve.empty() ||
           target->count() > 0 || second->count() > 0 || samples->count() > 0)
         throw InputError("--sweep-n", "a sweep takes --theta0-deg, --sweep-split-deg, --sweep-k-ratio, --json and --plot only");
+      if (design_opt->count() > 0) throw InputError("--design", "needs --target-switching-force (not a sweep)");
       run_sweep(*a, theta0_opt->count() > 0);
       return;
     }
@@ -298,11 +305,23 @@ void add_waterbomb_command(CLI::App& app) {
     if (n_opt->count() == 0) throw InputError("--n", "is required (or --sweep-n for a design sweep)");
     if (a->n < 3 || a->n > 180) throw InputError("--n", "must be between 3 and 180, got " + std::to_string(a->n));
     const bool split_fold = split->count() > 0;
+    if (design_opt->count() > 0 && a->design != "k_m" && a->design != "theta0")
+      throw InputError("--design", "must be k_m or theta0, got '" + a->design + "'");
+    if (design_opt->count() > 0 && target->count() == 0) throw InputError("--design", "needs --target-switching-force");
+    const bool rest_by_force = target->count() > 0 && a->design == "theta0";
+    if (rest_by_force && theta0_opt->count() > 0)
+      throw InputError("--design", "theta0 designs the rest angle: give it without --theta0-deg");
+    if (rest_by_force && split_fold) throw InputError("--split-deg", "--target-switching-force is not available for split folds yet");
     const bool design_rest = second->count() > 0;
     if (design_rest && theta0_opt->count() > 0)
       throw InputError("--target-second-state-deg", "designs the rest angle: give it without --theta0-deg");
-    if (!design_rest && theta0_opt->count() == 0)
-      throw InputError("--theta0-deg", "is required (or --target-second-state-deg to design it)");
+    if (!design_rest && !rest_by_force && theta0_opt->count() == 0)
+      throw InputError("--theta0-deg", "is required (or --target-second-state-deg, or --target-switching-force with --design theta0, to design it)");
+    if (rest_by_force) {
+      if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
+        throw InputError("--target-switching-force", "must be a finite number > 0");
+      a->theta0_deg = 45.0;  // a placeholder inside the range, replaced by the design below
+    }
     if (design_rest && split_fold)
       throw InputError("--target-second-state-deg", "is for the plain base only (not with --split-deg)");
     if (design_rest && target->count() > 0)
@@ -350,8 +369,12 @@ void add_waterbomb_command(CLI::App& app) {
       rest_design = waterbomb::rest_angle_for_state2(a->n, to_radians(a->target_second_state_deg), k_m, k_v);
       a->theta0_deg = to_degrees(rest_design.theta0);
     }
+    if (rest_by_force) {
+      rest_design.theta0 = waterbomb::rest_angle_for_switching_force(a->n, a->target_switching_force, k_m, k_v, std::cos(kPi / a->n));
+      a->theta0_deg = to_degrees(rest_design.theta0);
+    }
     // Clamp against the last-bit rounding of the degree conversion at the upper limit.
-    const double theta0 = design_rest ? rest_design.theta0 : split_fold ? std::min(std::max(to_radians(a->theta0_deg), split_range.theta_min), split_range.theta_max)
+    const double theta0 = design_rest || rest_by_force ? rest_design.theta0 : split_fold ? std::min(std::max(to_radians(a->theta0_deg), split_range.theta_min), split_range.theta_max)
                                      : std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
     if (samples->count() > 0 && a->curve.empty() && a->plot.empty()) throw InputError("--samples", "needs --curve or --plot");
     if (split_fold && target->count() > 0)
@@ -461,7 +484,15 @@ void add_waterbomb_command(CLI::App& app) {
                      {"slope_residual", rest_design.slope_residual}, {"curvature", rest_design.curvature},
                      {"second_state_gap_rad", gap}};
     }
-    if (target->count() > 0) {
+    if (rest_by_force) {
+      // The design, confirmed on the general model: the switching force at the designed theta0.
+      const auto sw = waterbomb::switching_force_checked(a->n, theta0, k_m, k_v);
+      const double miss = std::fabs(sw.force - a->target_switching_force);
+      if (!(miss <= 1e-9 * a->target_switching_force))
+        throw NoAnswerError("--target-switching-force: the designed theta0 switches " + round_trip_text(miss) + " away from the target", miss);
+      j["design"] = {{"target_switching_force", a->target_switching_force}, {"theta0_deg", a->theta0_deg}, {"k_m", k_m}, {"k_v", k_v},
+                     {"switching_force", sw.force}};
+    } else if (target->count() > 0) {
       if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
         throw InputError("--target-switching-force", "must be a finite number > 0");
       if (!(theta0 < kPi / 2)) throw InputError("--target-switching-force", "needs a rest state before flat (--theta0-deg < 90)");
@@ -534,6 +565,10 @@ void add_waterbomb_command(CLI::App& app) {
     if (design_rest) {
       std::snprintf(line, sizeof line, "  design: rest theta0 = %.17g deg puts the second stable state at %.12g deg (gap %.1e rad)\n",
                     a->theta0_deg, a->target_second_state_deg, j["design"]["second_state_gap_rad"].get<double>());
+      std::cout << line;
+    } else if (rest_by_force) {
+      std::snprintf(line, sizeof line, "  design: rest theta0 = %.17g deg (k_m = %.12g, k_v = %.12g) switches at %.12g\n", a->theta0_deg,
+                    k_m, k_v, a->target_switching_force);
       std::cout << line;
     } else if (j.contains("design")) {
       std::snprintf(line, sizeof line, "  design: k_m = %.12g (with k_v = %.12g) switches at %.12g\n", j["design"]["k_m"].get<double>(),

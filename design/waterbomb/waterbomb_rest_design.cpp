@@ -7,6 +7,8 @@
 #include <string>
 
 #include "design/waterbomb/waterbomb_energy.hpp"
+#include "design/waterbomb/waterbomb_switching.hpp"
+#include "kernel/math/number_text.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
@@ -48,6 +50,34 @@ RestAngleDesign rest_angle_for_state2(int n, double theta2, double k_m, double k
   if (!(out.curvature > 0.0))
     throw NoAnswerError("theta2 is stationary for the designed rest angle but not a minimum (d2V/dtheta2)", out.curvature);
   return out;
+}
+
+double rest_angle_for_switching_force(int n, double target, double k_m, double k_v, double r) {
+  theta_limit(n);  // checks n
+  if (!std::isfinite(target) || !(target > 0.0)) throw InputError("target", "the switching force must be a finite number > 0");
+  springs_at_rest_theta(n, 0.0, k_m, k_v);  // checks k_m, k_v
+  auto f = [&](double theta0) { return switching_force(springs_at_rest_theta(n, theta0, k_m, k_v), theta0, r).force - target; };
+  const double lo = 0.0, hi = std::nextafter(kPi / 2, 0.0);
+  const double flo = f(lo), fhi = f(hi);
+  if (!(flo >= 0.0))
+    throw NoAnswerError("even the rest angle theta0 = 0 switches at " + round_trip_text(flo + target) + ", below the target " +
+                            round_trip_text(target),
+                        flo + target);
+  if (!(fhi < 0.0))
+    throw NoAnswerError("the target switching force is too small to resolve next to the flat rest state", target);
+  double theta0 = lo;
+  if (flo > 0.0) {
+    std::uintmax_t iterations = 200;
+    const auto bracket = boost::math::tools::toms748_solve(
+        f, lo, hi, flo, fhi,
+        [](double x, double y) { return std::fabs(x - y) <= 2 * std::numeric_limits<double>::epsilon() * std::fmax(std::fabs(x), std::fabs(y)); },
+        iterations);
+    theta0 = std::fabs(f(bracket.first)) <= std::fabs(f(bracket.second)) ? bracket.first : bracket.second;
+  }
+  const double miss = std::fabs(f(theta0));
+  if (!(miss <= 1e-9 * target))
+    throw NoAnswerError("the solved rest angle switches " + round_trip_text(miss) + " away from the target", miss);
+  return theta0;
 }
 
 }  // namespace rigidfold::waterbomb

@@ -26,4 +26,16 @@ struct RestAngleDesign {
 // stationary theta2 is not a minimum (the residual is the curvature).
 RestAngleDesign rest_angle_for_state2(int n, double theta2, double k_m, double k_v);
 
+// The rest angle theta0 in [0, pi/2) whose switching force (waterbomb_switching.hpp: the
+// largest push on [theta0, pi/2]) is `target`, for stiffnesses k_m, k_v and valley crease
+// length r. At every theta below flat the push F(theta) = n [k_m (gm - gm0) gm' + k_v (gv - gv0)
+// gv'] / (r sin theta) falls as theta0 grows (gm0 rises with gm' = 2 > 0, gv0 falls with gv' < 0)
+// and the interval [theta0, pi/2] shrinks, so the switching force is strictly decreasing in
+// theta0: bracketed on [0, pi/2) and solved by TOMS 748 to adjacent doubles, then checked:
+// its switching force within 1e-9 x target.
+// Throws InputError ("target" not finite or <= 0; "n", "k_m", "k_v", "r" as elsewhere) and
+// NoAnswerError when the target is above the switching force at theta0 = 0 (the residual is
+// that force) or below what the solver can resolve next to flat.
+double rest_angle_for_switching_force(int n, double target, double k_m, double k_v, double r);
+
 }  // namespace rigidfold::waterbomb

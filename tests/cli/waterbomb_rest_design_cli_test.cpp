@@ -59,3 +59,33 @@ TEST(WaterbombRestDesignCli, BadInputExitsTwoNamingTheFlag) {
 
 }  // namespace
 }  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+TEST(WaterbombRestDesignCli, RestAngleForASwitchingForce) {
+  const auto r = test::run_command(test::cli() + " waterbomb --n 5 --target-switching-force 12 --design theta0 --k-ratio 2 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["switching_force"]["force"].get<double>(), 12.0, 1e-9 * 12);
+  EXPECT_EQ(j["theta0_deg"].get<double>(), j["design"]["theta0_deg"].get<double>());
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--n 5 --target-switching-force 12 --design theta0 --theta0-deg 50", "--design"},
+      {"--n 5 --target-switching-force 12 --design k_v --theta0-deg 50", "--design"},
+      {"--n 5 --design theta0 --theta0-deg 50", "--design"},
+      {"--n 5 --target-switching-force -3 --design theta0", "--target-switching-force"},
+      {"--n 5 --target-switching-force 12 --design theta0 --split-deg 3", "--split-deg"},
+  };
+  for (const auto& [flags, name] : cases) {
+    const auto bad = test::run_command(test::cli() + " waterbomb " + flags);
+    EXPECT_EQ(bad.status, 2) << flags;
+    EXPECT_NE(bad.err.find(name), std::string::npos) << flags << ": " << bad.err;
+  }
+  // Above what theta0 = 0 gives: exit 3, nothing printed.
+  const auto high = test::run_command(test::cli() + " waterbomb --n 5 --target-switching-force 1e9 --design theta0");
+  EXPECT_EQ(high.status, 3) << high.err;
+  EXPECT_TRUE(high.out.empty());
+}
+
+}  // namespace
+}  // namespace rigidfold

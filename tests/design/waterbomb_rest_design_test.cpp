@@ -7,6 +7,7 @@
 
 #include "design/waterbomb/waterbomb_bistability.hpp"
 #include "design/waterbomb/waterbomb_rest_design.hpp"
+#include "design/waterbomb/waterbomb_switching.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
@@ -71,6 +72,38 @@ TEST(WaterbombRestDesign, BadInputAndNoAnswer) {
   // Valleys only, target near the valley limit: gamma_v there exceeds gamma_v(0) = 180 - 360/n,
   // so no rest angle pulls the valleys far enough.
   EXPECT_THROW(waterbomb::rest_angle_for_state2(4, to_radians(134.0), 0.0, 1.0), NoAnswerError);
+}
+
+}  // namespace
+}  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// The rest angle for a target switching force: forward from known rest angles and back, the
+// designed angle's switching force on the general model equal to the target to 1e-9, and the
+// switching force falling as theta0 rises (the monotonicity the solver relies on).
+TEST(WaterbombRestDesign, RestAngleForSwitchingForceRoundTrip) {
+  for (int n : {3, 4, 8})
+    for (double ratio : {0.5, 2.0}) {
+      const double r = std::cos(kPi / n);
+      double previous = INFINITY;
+      for (double t0deg : {20.0, 45.0, 70.0, 85.0}) {
+        const double theta0 = to_radians(t0deg);
+        const double force = waterbomb::switching_force(waterbomb::springs_at_rest_theta(n, theta0, ratio, 1.0), theta0, r).force;
+        EXPECT_LT(force, previous) << n << " " << t0deg;
+        previous = force;
+        const double designed = waterbomb::rest_angle_for_switching_force(n, force, ratio, 1.0, r);
+        EXPECT_NEAR(designed, theta0, 1e-9) << n << " " << ratio << " " << t0deg;
+        const auto checked = waterbomb::switching_force_checked(n, designed, ratio, 1.0);
+        EXPECT_NEAR(checked.force, force, 1e-9 * force);
+      }
+    }
+  const double r = std::cos(kPi / 4);
+  const double top = waterbomb::switching_force(waterbomb::springs_at_rest_theta(4, 0.0, 1.0, 1.0), 0.0, r).force;
+  EXPECT_THROW(waterbomb::rest_angle_for_switching_force(4, 1.01 * top, 1.0, 1.0, r), NoAnswerError);
+  EXPECT_THROW(waterbomb::rest_angle_for_switching_force(4, -1.0, 1.0, 1.0, r), InputError);
+  EXPECT_THROW(waterbomb::rest_angle_for_switching_force(4, NAN, 1.0, 1.0, r), InputError);
 }
 
 }  // namespace
