@@ -97,9 +97,13 @@ for f in data/network/*.json; do
     ./build/app/rigidfold network "$f" --json --trace 12 > "out/report/network/$name"
   fi
 done
+# The eq 2-34 assembly as a crease pattern (Fig 2-12), and its verdict.
+./build/app/rigidfold network data/network/eq2-34.json --out out/report/network/eq2-34.fold >/dev/null
+./build/app/rigidfold check out/report/network/eq2-34.fold --json > out/report/network/eq2-34_check.json
 # Metamaterial units (seed 003 ch. 3): the square twist's dimensions and Poisson's ratios along
-# its motion (nu_HL changes sign at the height maximum), table and plots.
-./build/app/rigidfold metamaterial --unit square-twist --json --plot out/report/metamaterial/square_twist \
+# its motion (nu_HL changes sign at the height maximum), table and plots, cross-checked against
+# the 3 x 3 tessellation traced by the general solver (--cross-check).
+./build/app/rigidfold metamaterial --unit square-twist --json --cross-check --plot out/report/metamaterial/square_twist \
   > out/report/metamaterial_square_twist.json
 ./build/app/rigidfold metamaterial --unit element3 --plot out/report/metamaterial/element3 >/dev/null
 # The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
