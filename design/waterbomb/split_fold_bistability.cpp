@@ -269,16 +269,24 @@ SplitFoldBistability split_fold_bistability(int n, double b, double theta0, doub
   const double flat = kPi / 2;
   scan(s.range.theta_min, flat - kFlatOffset);
   {
-    // The flat cusp: every fold at 0; its sides from the general model's force 1e-4 rad away.
-    const HeightControlledEquilibrium below = model.loaded(flat - kFlatOffset), above = model.loaded(flat + kFlatOffset);
+    // The flat cusp: every fold at 0; its sides from the general model's force 1e-4 rad away
+    // (1e-3, then 1e-2 rad where the height control does not converge that close to flat).
+    double offset = kFlatOffset;
+    HeightControlledEquilibrium below = model.loaded(flat - offset), above = model.loaded(flat + offset);
+    for (double wider : {1e-3, 1e-2}) {
+      if (below.converged && above.converged) break;
+      offset = wider;
+      below = model.loaded(flat - offset);
+      above = model.loaded(flat + offset);
+    }
     if (!below.converged || !above.converged)
       throw NoAnswerError("split-fold waterbomb: the general model does not converge next to the flat state (constraint residual)",
                           std::max(below.constraint_residual, above.constraint_residual));
     CheckedEquilibrium c;
     c.path.theta = flat;
     c.path.energy = energy_of(s, FoldPair{0.0, 0.0});
-    c.path.slope_below = below.force * model.r * std::sin(flat - kFlatOffset);
-    c.path.slope_above = above.force * model.r * std::sin(flat + kFlatOffset);
+    c.path.slope_below = below.force * model.r * std::sin(flat - offset);
+    c.path.slope_above = above.force * model.r * std::sin(flat + offset);
     c.min_reduced_eigenvalue = std::nan("");
     if (c.path.slope_below > 0.0 && c.path.slope_above < 0.0) {
       c.path.kind = EquilibriumKind::kCuspMaximum;
@@ -298,7 +306,7 @@ SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, doub
   const SplitFoldSprings s = split_fold_springs(n, b, theta0, k_m, k_v);
   GeneralModel model(s);
   const double lo = s.range.theta_min, hi = s.range.theta_max;
-  const double margin = 1e-3 * (hi - lo);
+  const double margin = 1e-2 * (hi - lo);  // the printed forms turn singular at both ends (sqrt onset)
   std::vector<double> thetas;
   for (int i = 0; i < samples; ++i) {
     double th = lo + margin + (hi - lo - 2 * margin) * i / (samples - 1);
@@ -313,14 +321,16 @@ SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, doub
     c.theta = th;
     const HeightControlledEquilibrium eq = model.loaded(th);
     const FoldPair printed = ranged_angles(s, th);
-    // dV/dtheta of the printed energy: Richardson on central differences, steps h and h/2,
-    // h kept inside the contact limits and on this side of flat.
+    // dV/dtheta of the printed energy: two Richardson levels on central differences (steps h,
+    // h/2, h/4; error O(h^6)), h kept inside the range and on this side of flat.
     const double room = std::min({th - lo, hi - th, std::fabs(th - kPi / 2)});
     const double h = std::min(1e-3, 0.5 * room);
     auto central = [&](double step) {
       return (split_fold_energy(s, th + step) - split_fold_energy(s, th - step)) / (2 * step);
     };
-    const double slope = (4 * central(h / 2) - central(h)) / 3;
+    const double d1 = central(h), d2 = central(h / 2), d4 = central(h / 4);
+    const double r1 = (4 * d2 - d1) / 3, r2 = (4 * d4 - d2) / 3;
+    const double slope = (16 * r2 - r1) / 15;
     c.force_closed_form = slope / (r * std::sin(th));
     const double gap = eq.converged ? (eq.edge_angles - model.per_edge(printed)).lpNorm<Eigen::Infinity>() : INFINITY;
     c.checked = eq.converged && model.asymmetry(eq.edge_angles) <= SplitFoldBistability::kSymmetryTolerance &&

@@ -27,7 +27,9 @@
 //     kSymmetryTolerance) and lie on the printed path: theta read back from gamma_m, the printed
 //     gamma_v there within kPathAgreement.
 // The flat state (theta = pi/2, every fold 0) is a cusp of V and a singular point of the
-// closure manifold: reported with one-sided difference slopes, not analysed by the kernel.
+// closure manifold: reported with its one-sided slopes dV/dtheta taken from the general model's
+// force 1e-4 rad either side (1e-3 or 1e-2 rad where the height control does not converge that
+// close), not analysed by the kernel.
 // Minima on the contact limits theta*, theta_max are flagged (contact, not free equilibria).
 // Units: angles radians; k energy / rad^2; V in the unit of k times rad^2; lengths in the
 // unit-crease base's units; force in energy / length, F > 0 pushing the vertex toward the supports.
@@ -90,11 +92,11 @@ struct SplitFoldBistability {
 SplitFoldBistability split_fold_bistability(int n, double b, double theta0, double k_m, double k_v);
 
 // Energy and force-deflection samples (design/waterbomb/waterbomb_curve.hpp's CurveSample):
-// `samples` thetas evenly over [theta*, theta_max] (ends kept 1e-3 of the range inside, flat
-// nudged by the same to its side). Each: the general model's loaded equilibrium at h = r cos
+// `samples` thetas evenly over [theta*, theta_max] (ends kept 1e-2 of the range inside, where
+// the printed forms turn singular; flat nudged by the same to its side). Each: the general model's loaded equilibrium at h = r cos
 // theta (force = its reaction, stability = its reduced Hessian), checked when converged,
 // symmetric and on the printed path (kPathAgreement); force_closed_form is dV/dh of the printed
-// energy by a Richardson-extrapolated central difference (step 1e-3 rad and half of it), and a
+// energy by central differences with two Richardson levels (steps 1e-3, 5e-4, 2.5e-4 rad), and a
 // sample is checked only when the two forces agree within kForceAgreement x max(1, |F|).
 struct SplitFoldCurve {
   std::vector<CurveSample> samples;
