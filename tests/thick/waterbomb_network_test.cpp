@@ -1,0 +1,162 @@
+// Issue 15, "the mu = 1/2 waterbomb pattern is shown to lose mobility, with the locking
+// named": the traditional waterbomb pattern (data/generators/traditional_waterbomb.hpp, seed
+// 003 §4.4.2: D and W vertices) as a network of thick Bricard loops
+// (kernel/thick/waterbomb_network.hpp), checked with the general SE(3) closure
+// (ThickClosureSystem) and kernel/thick/thick_network_mobility.hpp.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "data/generators/traditional_waterbomb.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/solve/rank.hpp"
+#include "kernel/thick/thick_closure_system.hpp"
+#include "kernel/thick/thick_network_mobility.hpp"
+#include "kernel/thick/waterbomb_network.hpp"
+
+namespace rigidfold {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Pattern {
+  CreasePattern flat = generators::traditional_waterbomb({3, 3});
+  Topology topology = build_topology(flat);
+  WaterbombNetwork network(double mu) const { return waterbomb_network(flat, topology, mu, 0.1, 0.1, 0.05); }
+  int count(const WaterbombNetwork& net, WaterbombVertexKind kind) const {
+    int n = 0;
+    for (WaterbombVertexKind k : net.kind) n += k == kind;
+    return n;
+  }
+};
+
+TEST(ThickWaterbombPattern, ZeroThicknessUniformMotionClosesTheGeneralSolver) {
+  const Pattern p;
+  const WaterbombNetwork net = p.network(1.0);
+  EXPECT_EQ(p.count(net, WaterbombVertexKind::kD), 9);
+  EXPECT_GE(p.count(net, WaterbombVertexKind::kW), 4);
+  const ClosureSystem zero(p.flat, p.topology);
+  double worst = 0.0;
+  for (int k = 1; k < 20; ++k) {
+    const Eigen::VectorXd state = waterbomb_network_uniform_state(p.flat, net, kPi * k / 20);
+    worst = std::max(worst, zero.residual(zero.unknowns_from_edges(state)).cwiseAbs().maxCoeff());
+    for (int e = 0; e < p.flat.num_edges(); ++e) {  // the generator's letters are the motion's signs
+      if (state[e] == 0.0) continue;
+      EXPECT_EQ(state[e] > 0, p.flat.assignments[e] == Assignment::Valley) << "edge " << e;
+    }
+  }
+  EXPECT_LE(worst, 1e-13);
+  std::printf("traditional waterbomb 3x3: %d D + %d W vertices; uniform zero-thickness motion closes the core to %.1e\n",
+              p.count(net, WaterbombVertexKind::kD), p.count(net, WaterbombVertexKind::kW), worst);
+}
+
+// Drives the midline crease of the first D loop from flat to rho_end in steps, each step a
+// least-squares closure (thick_network_hold) from the previous state. The flat state is a
+// bifurcation (seed §4.4.2: creases 2 and 6 of W are collinear there), so the first step
+// starts on the zero-thickness branch: its uniform state at the first driver angle.
+struct Trace {
+  double worst_residual = 0.0;      // largest ||r||_inf over the steps
+  double least_residual = 1e300;    // smallest ||r||_inf over the steps
+  double off_uniform = 0.0;         // largest |rho - rho_uniform| over the steps
+  bool all_stationary = true;
+  std::vector<int> open_loops;      // union over the steps
+};
+
+Trace trace(const Pattern& p, const WaterbombNetwork& net, double rho_end, int steps) {
+  Trace out;
+  const int driver = net.creases[0][0];
+  Eigen::VectorXd state = waterbomb_network_uniform_state(p.flat, net, rho_end / steps);
+  for (int k = 1; k <= steps; ++k) {
+    const double rho = rho_end * k / steps;
+    const ThickHoldResult h = thick_network_hold(net.thick, driver, rho, state, 1e-10);
+    state = h.creases;
+    out.worst_residual = std::max(out.worst_residual, h.residual);
+    out.least_residual = std::min(out.least_residual, h.residual);
+    out.all_stationary = out.all_stationary && (h.stationary || h.residual <= 1e-13);
+    const Eigen::VectorXd uniform = waterbomb_network_uniform_state(p.flat, net, rho);
+    for (Eigen::Index e = 0; e < state.size(); ++e)
+      out.off_uniform = std::max(out.off_uniform, std::abs(std::remainder(state[e] - uniform[e], 2 * kPi)));
+    for (int l : h.open_loops)
+      if (std::find(out.open_loops.begin(), out.open_loops.end(), l) == out.open_loops.end()) out.open_loops.push_back(l);
+  }
+  return out;
+}
+
+// Largest residual of each loop's rows over uniform zero-thickness states.
+std::vector<double> off_motion(const Pattern& p, const WaterbombNetwork& net) {
+  const ThickClosureSystem system(net.thick);
+  std::vector<double> worst(net.thick.loops.size(), 0.0);
+  for (int k = 1; k < 20; ++k) {
+    const Eigen::VectorXd r = system.residual(system.unknowns_from_creases(waterbomb_network_uniform_state(p.flat, net, kPi * k / 20)));
+    for (std::size_t l = 0; l < worst.size(); ++l) worst[l] = std::max(worst[l], r.segment(6 * static_cast<Eigen::Index>(l), 6).cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+// mu = 1 (4-60): every thick loop closes on the zero-thickness motion, the general solver
+// traces the network from flat with it, and at folded states the network has one DOF with a
+// clear gap (each loop alone one DOF: Bricard).
+TEST(ThickWaterbombPattern, MuOneFollowsTheZeroThicknessMotionWithOneDof) {
+  const Pattern p;
+  const WaterbombNetwork net = p.network(1.0);
+  double worst = 0.0;
+  for (double r : off_motion(p, net)) worst = std::max(worst, r);
+  EXPECT_LE(worst, 1e-13);
+  const Trace t = trace(p, net, 2.5, 50);
+  EXPECT_LE(t.worst_residual, 1e-12);
+  EXPECT_LE(t.off_uniform, 1e-10);
+  EXPECT_TRUE(t.open_loops.empty());
+  for (double rho : {0.3, 1.0, 2.0, 2.8}) {
+    const ThickNetworkMobility m = thick_network_mobility(net.thick, waterbomb_network_uniform_state(p.flat, net, rho), 1e-12);
+    EXPECT_EQ(m.dof, 1) << "rho = " << rho;
+    EXPECT_GT(m.rank.sigma_kept, 1e3 * m.rank.threshold) << "rho = " << rho;
+    EXPECT_TRUE(m.locked_loops.empty());
+    for (const ThickLoopMobility& l : m.loops) EXPECT_EQ(l.dof_alone, 1) << net.thick.loops[l.loop].name;
+  }
+  const ThickNetworkMobility m = thick_network_mobility(net.thick, waterbomb_network_uniform_state(p.flat, net, 1.0), 1e-12);
+  std::printf("thick waterbomb pattern mu = 1: loops on the zero-thickness motion to %.1e; traced to rho = 2.5 (residual <= %.1e, "
+              "off the uniform motion %.1e); DOF %d of %d creases (sigma_kept %.2e, cut %.1e)\n",
+              worst, t.worst_residual, t.off_uniform, m.dof, m.free_creases, m.rank.sigma_kept, m.rank.threshold);
+}
+
+// mu = 1/2: every D loop still closes on the zero-thickness motion, every W loop leaves it
+// (the W's shared creases with its D's disagree: seed §4.4.2), and the network cannot be
+// driven off flat: the least-squares closure with the driver held stays open (stationary,
+// residual far above the tolerance) at every step, where mu = 1 closes to round-off. The
+// flat state itself closes; its first-order DOF (5, as for mu = 1: the flat state is a
+// bifurcation of every Bricard loop, two DOF alone) does not decide mobility there.
+TEST(ThickWaterbombPattern, MuOneHalfLosesMobilityAndTheWVerticesAreNamed) {
+  const Pattern p;
+  const WaterbombNetwork net = p.network(0.5);
+  const std::vector<double> off = off_motion(p, net);
+  std::vector<int> named, w_vertices;
+  for (std::size_t l = 0; l < off.size(); ++l) {
+    if (off[l] > 1e-10) named.push_back(net.vertex_of_loop[l]);
+    if (net.kind[l] == WaterbombVertexKind::kW) w_vertices.push_back(net.vertex_of_loop[l]);
+    if (net.kind[l] == WaterbombVertexKind::kD) EXPECT_LE(off[l], 1e-13) << net.thick.loops[l].name;
+    if (net.kind[l] == WaterbombVertexKind::kW) EXPECT_GT(off[l], 1e-3) << net.thick.loops[l].name;
+  }
+  EXPECT_EQ(named, w_vertices);
+
+  const ThickNetworkMobility flat = thick_network_mobility(net.thick, Eigen::VectorXd::Zero(p.flat.num_edges()), 1e-12);
+  const ThickNetworkMobility flat_mu1 = thick_network_mobility(p.network(1.0).thick, Eigen::VectorXd::Zero(p.flat.num_edges()), 1e-12);
+  EXPECT_EQ(flat.dof, flat_mu1.dof);  // first order cannot tell them apart
+
+  const Trace t = trace(p, net, 1.0, 20);
+  EXPECT_TRUE(t.all_stationary);
+  EXPECT_GT(t.least_residual, 1e-5);
+  EXPECT_FALSE(t.open_loops.empty());
+  std::printf("thick waterbomb pattern mu = 1/2: W loops off the zero-thickness motion by >= %.2e, D loops <= %.1e; named:",
+              [&] { double m = 1e300; for (std::size_t l = 0; l < off.size(); ++l) if (net.kind[l] == WaterbombVertexKind::kW) m = std::min(m, off[l]); return m; }(),
+              [&] { double m = 0; for (std::size_t l = 0; l < off.size(); ++l) if (net.kind[l] == WaterbombVertexKind::kD) m = std::max(m, off[l]); return m; }());
+  for (int v : named) std::printf(" W%d", v);
+  std::printf("\n  driven from flat to 1 rad in 20 steps: least-squares closure stays open, residual %.2e .. %.2e (stationary: %s); "
+              "flat first-order DOF %d (mu = 1: %d)\n",
+              t.least_residual, t.worst_residual, t.all_stationary ? "yes" : "no", flat.dof, flat_mu1.dof);
+}
+
+}  // namespace
+}  // namespace rigidfold
