@@ -62,16 +62,7 @@ void add_check_command(CLI::App& app) {
                   "how far each coordinate may lie from the true one, in the file's length unit: auto (default: read off "
                   "the file's digits, float32 or drawn points), exact (judge the numbers as they are), or a number >= 0");
   cmd->callback([a] {
-    std::optional<double> tolerance;
-    if (a->tolerance == "exact") {
-      tolerance = 0.0;
-    } else if (a->tolerance != "auto") {
-      double u = -1;
-      const std::string err = finite_number_error(a->tolerance, u);
-      if (!err.empty() || u < 0)
-        throw InputError("--tolerance", "'" + a->tolerance + "' is not auto, exact or a finite number >= 0");
-      tolerance = u;
-    }
+    const std::optional<double> tolerance = coordinate_tolerance_flag("--tolerance", a->tolerance);
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     FoldabilityOptions options;

@@ -47,6 +47,7 @@
 
 #include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
+#include "app/number_flags.hpp"
 #include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
 #include "kernel/pattern/length_scale.hpp"
@@ -197,6 +198,7 @@ void print_text(const std::string& file, const CreasePattern& p, const MotionTra
                 const std::vector<std::pair<std::string, std::string>>& files) {
   std::cout << file << ": model " << m.model_name << "\n";
   if (!m.note.empty()) std::cout << "  " << m.note << "\n";
+  std::cout << "  precision: " << m.coordinate_precision << "\n";
   for (const MotionBranch& b : m.branches) {
     std::cout << "  branch " << b.id << ": drive crease " << b.drive << " to " << degrees_text(b.to) << " deg";
     if (!b.traced) {
@@ -224,6 +226,7 @@ void add_trace_command(CLI::App& app) {
     std::optional<double> to;
     int steps = 50;
     bool json = false, ignore = false, general = false;
+    std::string tolerance = "auto";
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
@@ -236,6 +239,9 @@ void add_trace_command(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print the summary as JSON");
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--general", a->general, "force the general loop-closure solver");
+  cmd->add_option("--tolerance", a->tolerance,
+                  "how far each coordinate may lie from the true one, in the file's length unit: auto (default: read off "
+                  "the input), exact, or a number >= 0 (as check --tolerance)");
   cmd->callback([a] {
     // Every path checked against the others before any work; all outputs committed together.
     OutputSet outputs;
@@ -256,6 +262,7 @@ void add_trace_command(CLI::App& app) {
     rq.drive = a->drive;
     if (a->to) rq.to = to_radians(*a->to);
     rq.steps = a->steps;
+    rq.coordinate_tolerance = coordinate_tolerance_flag("--tolerance", a->tolerance);
     const MotionTrace m = [&] {
       TerminalProgress progress("trace");  // its line is erased before anything is printed
       rq.progress = progress.sink();
@@ -290,6 +297,7 @@ void add_trace_command(CLI::App& app) {
     j["assignment"] = a->ignore ? "ignored" : "as given (sign constraints)";
     j["model"] = m.model_name;
     j["note"] = m.note;
+    j["coordinate_precision"] = m.coordinate_precision;
     bool traced = !m.branches.empty();
     for (const MotionBranch& b : m.branches) traced = traced && b.traced;
     j["traced"] = traced;

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
+
+#include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::cli {
 
@@ -48,6 +51,18 @@ inline CLI::Validator finite_in(double lo, double hi, const std::string& unit = 
         return err;
       },
       "in " + r, "finite_in");
+}
+
+// --tolerance auto|exact|U (check, trace): how far each coordinate may lie from the true one,
+// in the file's length unit. nullopt for auto (read off the input), 0 for exact; anything
+// else that is not a finite number >= 0 is an InputError naming `flag`.
+inline std::optional<double> coordinate_tolerance_flag(const std::string& flag, const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  if (text == "exact") return 0.0;
+  double u = -1;
+  if (!finite_number_error(text, u).empty() || u < 0)
+    throw InputError(flag, "'" + text + "' is not auto, exact or a finite number >= 0");
+  return u;
 }
 
 }  // namespace rigidfold::cli

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "kernel/analysis/path_watch.hpp"
+#include "kernel/pattern/coordinate_precision.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/closure/vertex_residuals.hpp"
 #include "kernel/geometry/fold_angles.hpp"
@@ -465,6 +466,7 @@ void trace_given_state(const CreasePattern& p, const Topology& t, const Eigen::V
   FoldabilityOptions fo;
   fo.use_assignment = rq.use_assignment;
   fo.tolerances = rq.tolerances;
+  fo.coordinate_tolerance = rq.coordinate_tolerance;
   fo.progress = rq.progress;
   const FoldabilityReport r = check_foldability(p, t, fo);
   out.model_name = r.model_name;
@@ -517,10 +519,14 @@ MotionTrace trace_motion(const CreasePattern& p, const Topology& t, const TraceR
   fo.use_assignment = rq.use_assignment;
   fo.force_general = rq.force_general;
   fo.tolerances = rq.tolerances;
+  if (rq.coordinate_tolerance && !(*rq.coordinate_tolerance >= 0 && std::isfinite(*rq.coordinate_tolerance)))
+    throw InputError("tolerance", "must be a finite number >= 0");
+  fo.coordinate_tolerance = rq.coordinate_tolerance;
   report_progress(rq.progress, [] { return std::string("trace: choosing the model"); });
   const ModelChoice choice = choose_model(p, t, fo);
   const Eigen::VectorXd ref = reference_fold_angles(p, t);
   MotionTrace out;
+  out.coordinate_precision = describe_input_precision(p, rq.coordinate_tolerance);
   out.model = choice.model;
   const std::optional<FoldabilityVerdict>& v = choice.multiplier;
   if (choice.model == FoldabilityModel::kGivenStateHoleClosure) {

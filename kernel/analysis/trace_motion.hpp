@@ -51,6 +51,9 @@ struct TraceRequest {
                                  // default 170 deg in its letter's direction (valley for U)
   int steps = 50;                // equally spaced driving angles (flat excluded)
   Tolerances tolerances = kDefaultTolerances;
+  // How far each coordinate may lie from the true one (FoldabilityOptions::coordinate_tolerance;
+  // `trace --tolerance`); nullopt: read off the input.
+  std::optional<double> coordinate_tolerance;
   ProgressSink progress;         // each continuation point and output step (progress.hpp)
 };
 
@@ -90,6 +93,7 @@ struct MotionTrace {
   FoldabilityModel model = FoldabilityModel::kNone;
   std::string model_name;
   std::string note;
+  std::string coordinate_precision;  // what the model choice assumed of the coordinates (describe_input_precision)
   std::vector<MotionBranch> branches;
 };
 

@@ -112,7 +112,7 @@ void bind_analysis(py::module_& m) {
       "trace",
       [](const CreasePattern& pattern, std::optional<int> drive, std::optional<double> to, int steps,
          bool use_assignment, bool force_general, std::optional<int> branch, bool all_branches,
-         const std::string& source) {
+         const std::string& source, std::optional<double> coordinate_tolerance) {
         MotionTrace trace;
         {
           py::gil_scoped_release release;
@@ -125,6 +125,7 @@ void bind_analysis(py::module_& m) {
           request.steps = steps;
           request.branch = branch;
           request.all_branches = all_branches;
+          request.coordinate_tolerance = coordinate_tolerance;
           trace = trace_motion(pattern, topology, request);
         }
         py::list branches;
@@ -132,21 +133,22 @@ void bind_analysis(py::module_& m) {
         py::dict d;
         d["model"] = trace.model_name;
         d["note"] = trace.note;
+        d["coordinate_precision"] = trace.coordinate_precision;
         d["branches"] = branches;
         return d;
       },
       py::arg("pattern"), py::arg("drive") = py::none(), py::arg("to") = py::none(), py::arg("steps") = 50,
       py::arg("use_assignment") = true, py::arg("force_general") = false, py::arg("branch") = py::none(),
-      py::arg("all_branches") = false, py::arg("source") = "pattern",
+      py::arg("all_branches") = false, py::arg("source") = "pattern", py::arg("coordinate_tolerance") = py::none(),
       "Folding motion (the kernel's trace_motion, the model `check` picks). drive: driving crease (edge index); "
       "to: its final fold angle (radians, |to| <= pi, default 170 deg its letter's way); steps: equally spaced "
-      "driving angles (flat excluded).\n"
-      "Returns {'model', 'note', 'branches': [...]}, each branch a dict: id, drive_edge, traced, dof, "
+      "driving angles (flat excluded); coordinate_tolerance: as check's (None: read off the input).\n"
+      "Returns {'model', 'note', 'coordinate_precision', 'branches': [...]}, each branch a dict: id, drive_edge, traced, dof, "
       "stop_reason, stopped_by, message, to, reached (rad), drive (numpy (S,) rad: the driving crease per step), "
       "fold_angles (numpy (S, E) rad, FOLD sign), residual (numpy (S,) rad: max vertex closure residual), "
       "mismatch (numpy (S,), relative face-placement mismatch), folded_vertices (numpy (S, N, 3), file units), "
       "events (list of dicts: step, kind, edge, drive, angle in rad), max_residual, max_mismatch.\n"
-      "Raises InputError with place 'drive', 'branch' or 'to' for a request that does not fit the pattern.");
+      "Raises InputError with place 'drive', 'branch', 'to' or 'tolerance' for a request that does not fit the pattern.");
 
   m.def(
       "enumerate_assignments",

@@ -52,6 +52,15 @@ def test_trace_bad_drive_raises_input_error():
     assert info.value.place == "drive"
 
 
+def test_trace_states_its_coordinate_precision():
+    pattern = rigidfold.miura_ori(**PARAMS)
+    assert rigidfold.trace(pattern, steps=2, coordinate_tolerance=0.0)["coordinate_precision"] == \
+        "coordinates taken as exact (--tolerance exact)"
+    with pytest.raises(rigidfold.InputError) as info:
+        rigidfold.trace(pattern, coordinate_tolerance=-1.0)
+    assert info.value.place == "tolerance"
+
+
 # Every bundled pattern with one motion from flat to trace (the others: no rigid motion with
 # their letters, several DOF, or a sheet with holes traced both ways from its given state).
 @pytest.mark.parametrize("name", ["corrugated_p_rigid.fold", "corrugated_q_rigid.fold", "miura_12x12_folded.fold",

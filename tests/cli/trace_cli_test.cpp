@@ -289,7 +289,8 @@ TEST(TraceCli, BadFlagsExitTwoWithoutOutput) {
   for (const std::string& flags : {"--drive " + std::to_string(p.num_edges()), std::string("--drive -1"),
                                   "--drive " + std::to_string(boundary), std::string("--to 200"),
                                   std::string("--to -180.5"), std::string("--to 0"), std::string("--steps 0"),
-                                  std::string("--branch 7"), std::string("--branch x")}) {
+                                  std::string("--branch 7"), std::string("--branch x"), std::string("--tolerance -1"),
+                                  std::string("--tolerance nan"), std::string("--tolerance loose")}) {
     const auto r = test::run_command(test::cli() + " trace " + in + " " + flags + " --out " + out + " --csv " + csv);
     EXPECT_EQ(r.status, 2) << flags << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << flags;
@@ -299,6 +300,39 @@ TEST(TraceCli, BadFlagsExitTwoWithoutOutput) {
   EXPECT_NE(test::run_command(test::cli() + " trace " + in + " --drive " + std::to_string(boundary)).err.find("--drive"),
             std::string::npos);
   EXPECT_EQ(test::run_command(test::cli() + " trace /nonexistent.fold").status, 2);
+}
+
+// trace --tolerance: a Miura written with 3 decimals (turned, so that the rounding breaks
+// Kawasaki) is traced on its flat-foldable witness when its digits are trusted (auto) or a
+// bound is stated, and by the general solver on the numbers as they are with exact; the
+// precision assumed is stated either way.
+TEST(TraceCli, ToleranceChoosesWhatTheCoordinatesAreTakenToBe) {
+  TempDir dir;
+  generators::MiuraParams m;
+  m.rows = 2;
+  m.cols = 5;
+  m.a = 100.0;
+  m.b = 131.371;
+  CreasePattern p = generators::miura_ori(m);
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  for (Eigen::Vector3d& v : p.vertices) {
+    const Eigen::Vector3d turned(c * v.x() - s * v.y(), s * v.x() + c * v.y(), 0.0);
+    for (int k = 0; k < 2; ++k) v[k] = std::round(turned[k] * 1e3) / 1e3;
+  }
+  const std::string in = dir.file("rounded.fold");
+  write_fold(p, in);
+  const auto read = run_json(in + " --steps 3");
+  ASSERT_FALSE(read.is_null());
+  EXPECT_NE(read["model"].get<std::string>().find("witness"), std::string::npos) << read["model"];
+  EXPECT_NE(read["coordinate_precision"].get<std::string>().find("3 decimals"), std::string::npos) << read["coordinate_precision"];
+  const auto stated = run_json(in + " --steps 3 --tolerance 0.01");
+  ASSERT_FALSE(stated.is_null());
+  EXPECT_NE(stated["model"].get<std::string>().find("witness"), std::string::npos) << stated["model"];
+  EXPECT_EQ(stated["coordinate_precision"], "coordinates within 0.01 of the true ones (stated with --tolerance)");
+  const auto exact = run_json(in + " --steps 3 --tolerance exact");
+  ASSERT_FALSE(exact.is_null());
+  EXPECT_EQ(exact["model"].get<std::string>().find("witness"), std::string::npos) << exact["model"];
+  EXPECT_EQ(exact["coordinate_precision"], "coordinates taken as exact (--tolerance exact)");
 }
 
 TEST(TraceCli, FullyFoldedMarksInterference) {
