@@ -10,7 +10,8 @@
 // every sample checked against the general model, or nothing is written (exit 3).
 // --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
 // every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
-// in the split fold's contact limits. No switching force or design for split folds yet.
+// in the split fold's valid range. The split fold's switching force is the general model's
+// (split_fold_switching_force); no stiffness or rest-angle design for split folds yet.
 // --target-switching-force F --design theta0 (plain base, replaces --theta0-deg): the rest angle
 // whose switching force is F (waterbomb_rest_design.hpp), confirmed on the general model.
 // --target-second-state-deg T2 (plain base, replaces --theta0-deg): the rest angle theta0 whose
@@ -471,6 +472,11 @@ void add_waterbomb_command(CLI::App& app) {
     j["barriers"] = barriers;
     // Switching force under force control (rest before flat only), on the radius-1 base.
     const double valley_length = std::cos(kPi / a->n);
+    if (split_fold && theta0 < kPi / 2 - 2e-4) {
+      const auto sw = waterbomb::split_fold_switching_force(a->n, b, theta0, k_m, k_v);
+      j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat},
+                              {"support_distance", support_distance}, {"closed_form_gap", sw.closed_form_gap}};
+    }
     if (!split_fold && theta0 < kPi / 2) {
       const auto sw = waterbomb::switching_force_checked(a->n, theta0, k_m, k_v);
       j["switching_force"] = {{"force", sw.force}, {"theta_deg", to_degrees(sw.theta)}, {"at_flat", sw.at_flat},
@@ -557,7 +563,8 @@ void add_waterbomb_command(CLI::App& app) {
       }
     }
     if (j.contains("switching_force")) {
-      std::snprintf(line, sizeof line, "  switching force %.12g at theta = %.12g deg%s (push from the rest state; radius-1 base)\n",
+      std::snprintf(line, sizeof line, split_fold ? "  switching force %.12g at theta = %.12g deg%s (push from the rest state; unit creases)\n"
+                                                  : "  switching force %.12g at theta = %.12g deg%s (push from the rest state; radius-1 base)\n",
                     j["switching_force"]["force"].get<double>(), j["switching_force"]["theta_deg"].get<double>(),
                     j["switching_force"]["at_flat"].get<bool>() ? " (the flat corner)" : "");
       std::cout << line;

@@ -300,6 +300,85 @@ SplitFoldBistability split_fold_bistability(int n, double b, double theta0, doub
   return out;
 }
 
+namespace {
+// dV/dtheta of the printed energy at th by central differences with two Richardson levels.
+double printed_slope(const SplitFoldSprings& s, double th) {
+  const double room = std::min({th - s.range.theta_min, s.range.theta_max - th, std::fabs(th - kPi / 2)});
+  const double h = std::min(1e-3, 0.5 * room);
+  auto central = [&](double step) { return (split_fold_energy(s, th + step) - split_fold_energy(s, th - step)) / (2 * step); };
+  const double d1 = central(h), d2 = central(h / 2), d4 = central(h / 4);
+  const double r1 = (4 * d2 - d1) / 3, r2 = (4 * d4 - d2) / 3;
+  return (16 * r2 - r1) / 15;
+}
+}  // namespace
+
+SplitFoldSwitching split_fold_switching_force(int n, double b, double theta0, double k_m, double k_v) {
+  const SplitFoldSprings s = split_fold_springs(n, b, theta0, k_m, k_v);
+  if (!(theta0 < kPi / 2 - 2e-4))
+    throw InputError("theta0", "the switching force needs a rest state before flat (theta0 < 90 deg)");
+  GeneralModel model(s);
+  // How close to flat the height control converges: 1e-4 rad, else 1e-3 or 1e-2 (as the cusp).
+  double kNearFlat = 1e-4;
+  for (double wider : {1e-3, 1e-2}) {
+    if (model.loaded(kPi / 2 - kNearFlat).converged && model.loaded(kPi / 2 - 2 * kNearFlat).converged) break;
+    if (!(theta0 < kPi / 2 - 2 * wider)) break;
+    kNearFlat = wider;
+  }
+  auto force = [&](double th) {
+    const HeightControlledEquilibrium eq = model.loaded(th);
+    if (!eq.converged)
+      throw NoAnswerError("split-fold switching force: the general model's loaded equilibrium at theta = " + deg_text(th) +
+                              " deg does not converge (constraint residual)",
+                          eq.constraint_residual);
+    return eq.force;
+  };
+  constexpr int kSamples = 64;
+  const double a = theta0, z = kPi / 2 - kNearFlat;
+  int best = 0;
+  double best_force = -INFINITY;
+  std::vector<double> t(kSamples + 1), f(kSamples + 1);
+  for (int i = 0; i <= kSamples; ++i) {
+    t[i] = i == kSamples ? z : a + (z - a) * i / kSamples;
+    f[i] = force(t[i]);
+    if (f[i] > best_force) {
+      best_force = f[i];
+      best = i;
+    }
+  }
+  SplitFoldSwitching out;
+  if (best == kSamples) {
+    out.at_flat = true;
+    out.theta = kPi / 2;
+    out.force = 2 * f[kSamples] - force(kPi / 2 - 2 * kNearFlat);
+  } else {
+    double lo = t[std::max(0, best - 1)], hi = t[best + 1];
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = force(x1), f2 = force(x2);
+    while (hi - lo > 1e-9) {
+      if (f1 > f2) {
+        hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = force(x1);
+      } else {
+        lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = force(x2);
+      }
+    }
+    out.theta = 0.5 * (lo + hi);
+    out.force = force(out.theta);
+  }
+  // The check: general force against dV/dh of the printed energy where the maximum is, or
+  // 1e-2 rad before flat when it is closer (the printed forms lose digits next to flat, where a
+  // difference quotient is noise).
+  const double check = std::min(out.theta, kPi / 2 - 1e-2);
+  if (check > theta0) {
+    const double f_check = check == out.theta ? out.force : force(check);
+    out.closed_form_gap = std::fabs(f_check - printed_slope(s, check) / (model.r * std::sin(check)));
+  }
+  if (!(out.closed_form_gap <= SplitFoldCurve::kForceAgreement * std::max(1.0, std::fabs(out.force))))
+    throw NoAnswerError("split-fold switching force: the general model's force differs from dV/dh of the printed energy "
+                        "(seed eqs 3.13-3.31) where the maximum is",
+                        out.closed_form_gap);
+  return out;
+}
+
 SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, double k_v, int samples) {
   if (samples < 3 || samples > 2001)
     throw InputError("samples", "must be between 3 and 2001, got " + std::to_string(samples));

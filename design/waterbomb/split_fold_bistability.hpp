@@ -98,6 +98,27 @@ SplitFoldBistability split_fold_bistability(int n, double b, double theta0, doub
 // symmetric and on the printed path (kPathAgreement); force_closed_form is dV/dh of the printed
 // energy by central differences with two Richardson levels (steps 1e-3, 5e-4, 2.5e-4 rad), and a
 // sample is checked only when the two forces agree within kForceAgreement x max(1, |F|).
+// Switching force of the split fold under force control (as waterbomb_switching.hpp for the
+// plain base): the largest push on [theta0, pi/2) along the symmetric path. There is no
+// closed-form slope, so the push is the general model's reaction force: sampled on 64 points
+// over [theta0, pi/2 - d], the largest refined by golden section to 1e-9 rad; when it is the
+// last sample (the maximum sits at the flat corner), the one-sided limit F(pi/2-) is
+// extrapolated linearly from the forces d and 2d before flat, d = 1e-4 rad (error O(d^2)), or
+// 1e-3 / 1e-2 rad where the height control does not converge that close to flat.
+// Checked: the general force equals dV/dh of the printed energy (two Richardson levels) within
+// kForceAgreement x max(1, |F|) where the maximum is, or 1e-2 rad before flat when the maximum
+// is closer to flat (there the printed forms lose digits and a difference quotient is noise).
+// Needs theta0 < pi/2 - 2e-4.
+// Throws InputError (as split_fold_springs; "theta0" at or past flat) and NoAnswerError when
+// the general model does not converge or the check fails.
+struct SplitFoldSwitching {
+  double force = 0.0;
+  double theta = 0.0;     // radians
+  bool at_flat = false;
+  double closed_form_gap = 0.0;  // |F - dV/dh of the printed energy| at the checked theta (0 if theta0 is past it)
+};
+SplitFoldSwitching split_fold_switching_force(int n, double b, double theta0, double k_m, double k_v);
+
 struct SplitFoldCurve {
   std::vector<CurveSample> samples;
   int unchecked = 0;

@@ -51,7 +51,10 @@ TEST(WaterbombSplitCli, JsonMatchesTheLibrary) {
     if (e["stable"].get<bool>()) ++stable;
   }
   EXPECT_EQ(stable, 2);
-  EXPECT_FALSE(j.contains("switching_force"));  // not available for split folds: not printed
+  // The switching force: the general model's, as the library gives it.
+  const auto sw = waterbomb::split_fold_switching_force(4, to_radians(5.0), to_radians(60.0), 1.5, 1.0);
+  EXPECT_EQ(j["switching_force"]["force"].get<double>(), sw.force);
+  EXPECT_GT(sw.force, 0.0);
   ASSERT_EQ(j["barriers"].size(), 2u);
 }
 

@@ -8,6 +8,7 @@
 
 #include "design/waterbomb/split_fold_bistability.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "design/waterbomb/waterbomb_switching.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/constrained_equilibrium.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -140,6 +141,36 @@ TEST(WaterbombSplitFoldBistability, CurveCheckedOnTheGeneralModel) {
     if (s.theta < th0 - 1e-6) EXPECT_LT(s.force, 0.0) << to_degrees(s.theta);
   }
   RecordProperty("split_curve_worst_force_gap", std::to_string(worst));
+}
+
+}  // namespace
+}  // namespace rigidfold
+
+namespace rigidfold {
+namespace {
+
+// Switching force of the split fold: as b -> 0 it tends to half the plain base's on a base
+// with unit valley creases (every fold halved: V_SF -> V_WB / 2; r = cos(b/2) -> 1), and it is
+// the largest push: no sampled general-model force between theta0 and flat exceeds it.
+TEST(WaterbombSplitFoldBistability, SwitchingForceTendsToHalfThePlainBase) {
+  for (int n : {3, 4, 6})
+    for (double t0deg : {50.0, 70.0}) {
+      const double th0 = to_radians(t0deg);
+      const double plain = waterbomb::switching_force(waterbomb::springs_at_rest_theta(n, th0, 1.0, 1.0), th0, 1.0).force;
+      double previous = INFINITY;
+      for (double bdeg : {0.5, 0.05, 0.005}) {
+        const auto sw = waterbomb::split_fold_switching_force(n, to_radians(bdeg), th0, 1.0, 1.0);
+        const double gap = std::fabs(sw.force / (plain / 2) - 1.0);
+        EXPECT_LT(gap, previous) << n << " " << t0deg << " " << bdeg;
+        previous = gap;
+      }
+      EXPECT_LT(previous, 1e-3) << n << " " << t0deg;
+    }
+  const auto sw = waterbomb::split_fold_switching_force(4, to_radians(5.0), to_radians(60.0), 2.0, 1.0);
+  const auto curve = waterbomb::split_fold_curve(4, to_radians(5.0), to_radians(60.0), 2.0, 1.0, 101);
+  for (const auto& s : curve.samples)
+    if (s.checked && s.theta > to_radians(60.0) && s.theta < kPi / 2) EXPECT_LE(s.force, sw.force * (1 + 1e-9)) << to_degrees(s.theta);
+  EXPECT_THROW(waterbomb::split_fold_switching_force(4, to_radians(5.0), to_radians(100.0), 1.0, 1.0), InputError);
 }
 
 }  // namespace
