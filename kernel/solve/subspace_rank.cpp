@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <Spectra/SymEigsSolver.h>
 #include <algorithm>
+#include <vector>
 #include <cmath>
 
 #include "kernel/solve/newton_projection.hpp"
@@ -94,7 +95,16 @@ RankResult subspace_rank(const Eigen::SparseMatrix<double>& J_in, const RankOpti
 
   SplitMix64 rng{0x5eed5ULL};
   const int block_cap = std::min(n, std::max(1, options.max_block));
-  int b = std::min(block_cap, std::max(1, options.dof_hint) + 4);
+  // rank J <= its rows with a nonzero entry, so DOF >= n - those rows: a block that small
+  // would only double its way up (a straight-line fold's midpoint on huffmanWaterbomb.svg:
+  // 339 flat vertices with an all-zero normal row each, DOF 337, seven doublings).
+  std::vector<char> live_row(J.rows(), 0);
+  for (int k = 0; k < J.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(J, k); it; ++it)
+      if (it.value() != 0.0) live_row[it.row()] = 1;
+  const int live_rows = static_cast<int>(std::count(live_row.begin(), live_row.end(), 1));
+  const int hint = std::max({1, options.dof_hint, n - live_rows});
+  int b = std::min(block_cap, hint + 4);
   Eigen::MatrixXd Q = orthonormal(random_block(n, b, rng));
   Eigen::VectorXd ritz;  // ascending
   int dof = 0;
