@@ -276,7 +276,7 @@ void add_waterbomb_command(CLI::App& app) {
                   "write energy and force-deflection along the symmetric path (CSV; each sample checked on the general model)");
   auto* split = cmd->add_option("--split-deg", a->split_deg,
                                  "split-fold base: sector b of each split-fold facet, degrees in (0, 180/n)");
-  cmd->add_option("--plot", a->plot,
+  auto* plot_opt = cmd->add_option("--plot", a->plot,
                   "directory to write waterbomb.csv, waterbomb.json and waterbomb.png (energy and force against apex height)");
   auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve / --plot over the valid range, 3..2001 (default 181)");
   auto* target = cmd->add_option("--target-switching-force", a->target_switching_force,
@@ -292,7 +292,8 @@ void add_waterbomb_command(CLI::App& app) {
                                    "(one checked analysis per n, split width and ratio at --theta0-deg)");
   auto* sweep_split = cmd->add_option("--sweep-split-deg", a->sweep_split, "sweep: split widths b in degrees, comma list (0 = plain base; default 0)");
   auto* sweep_k = cmd->add_option("--sweep-k-ratio", a->sweep_k, "sweep: stiffness ratios k_m / k_v, comma list (default 1)");
-  cmd->callback([a, ratio, samples, target, split, theta0_opt, second, n_opt, sweep_n, sweep_split, sweep_k, km, design_opt] {
+  cmd->callback([a, ratio, samples, target, split, theta0_opt, second, n_opt, sweep_n, sweep_split, sweep_k, km, design_opt, plot_opt] {
+    if (plot_opt->count() > 0 && a->plot.empty()) throw InputError("--plot", "needs a directory name");
     if (sweep_n->count() > 0) {
       if (n_opt->count() > 0 || split->count() > 0 || ratio->count() > 0 || km->count() > 0 || !a->curve.empty() ||
           target->count() > 0 || second->count() > 0 || samples->count() > 0)

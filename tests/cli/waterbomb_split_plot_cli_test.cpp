@@ -133,6 +133,10 @@ TEST(WaterbombSplitCli, FailedOrClashingPlotWritesNothing) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--plot"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out / "waterbomb.png"));
+  // An empty directory name.
+  r = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --plot ''");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--plot"), std::string::npos) << r.err;
   // A file where the directory should be.
   std::ofstream(dir / "file") << "x";
   r = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --plot " + (dir / "file").string());
