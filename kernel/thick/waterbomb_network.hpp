@@ -2,9 +2,10 @@
 // The traditional waterbomb pattern (data/generators/traditional_waterbomb.hpp, seed 003
 // §4.4.2) as a network of thick vertex linkages, the seed's own view of a thick pattern: every
 // interior vertex is one closed DH loop (thick_pattern.hpp) and loops share the fold angle of
-// every crease they share. No panel geometry is checked across vertices (see the closing note
-// of tests/thick/waterbomb_network_test.cpp: hinge heights of these models do not agree
-// across the pattern).
+// every crease they share. No panel geometry is checked across vertices: hinge heights
+// of these models do not agree across the pattern for any D thickness, even at mu = 1
+// (tests/thick/waterbomb_network_test.cpp, HingeHeightsOfTheModelsDisagreeAcrossThePattern),
+// so the pattern cannot be run as a ThickHeightSheet (hinge_heights.hpp).
 //
 //   D vertices (sectors 45, 90, 45, 45, 90, 45 deg from a midline crease): the plane-symmetric
 //     Bricard diamond model diamond_vertex(pi/4, t1, t2), crease 0 on the first midline

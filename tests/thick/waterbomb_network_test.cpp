@@ -8,11 +8,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <utility>
 #include <numbers>
 
 #include "data/generators/traditional_waterbomb.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/solve/rank.hpp"
+#include "kernel/thick/hinge_heights.hpp"
+#include "kernel/thick/thick_vertex_models.hpp"
+#include "kernel/thick/vertex_height_steps.hpp"
 #include "kernel/thick/thick_closure_system.hpp"
 #include "kernel/thick/thick_network_mobility.hpp"
 #include "kernel/thick/waterbomb_network.hpp"
@@ -32,6 +37,88 @@ struct Pattern {
     return n;
   }
 };
+
+// Flat single vertex with the given sectors (creases 0..n-1 = edges 0..n-1).
+CreasePattern flat_vertex(const std::vector<double>& sectors) {
+  CreasePattern p;
+  const int n = static_cast<int>(sectors.size());
+  p.vertices.push_back(Eigen::Vector3d::Zero());
+  double direction = 0.0;
+  for (int i = 0; i < n; ++i) {
+    p.vertices.emplace_back(std::cos(direction), std::sin(direction), 0.0);
+    direction += sectors[i];
+  }
+  for (int i = 0; i < n; ++i) {
+    p.edges.push_back({0, i + 1});
+    p.assignments.push_back(Assignment::Unassigned);
+  }
+  for (int i = 0; i < n; ++i) {
+    p.edges.push_back({i + 1, (i + 1) % n + 1});
+    p.assignments.push_back(Assignment::Boundary);
+    p.faces.push_back({0, i + 1, (i + 1) % n + 1});
+  }
+  p.fold_angles.assign(p.edges.size(), std::nullopt);
+  return p;
+}
+
+// Height steps round each vertex from its crease 0 (model order): the diamond's
+// (t1, -t2, -(t1+t2), t1+t2, t2, -t1) (tests/thick/vertex_heights_test.cpp) and the
+// waterbomb's (1+mu, 1, -mu, mu, -1, -(1+mu)) t (heights 0, 2t, 3t, 2t, 3t, 2t there at mu = 1)
+// negated for its mirror image. Each closes alone on its zero-thickness motion (checked).
+std::vector<double> d_steps(double t1, double t2) { return {t1, -t2, -(t1 + t2), t1 + t2, t2, -t1}; }
+std::vector<double> w_steps(double mu, double t) { return {-(1 + mu) * t, -t, mu * t, -mu * t, t, (1 + mu) * t}; }
+
+double single_vertex_residual(const std::vector<double>& sectors, const std::vector<double>& steps,
+                              const std::function<std::vector<double>(double)>& zero) {
+  const CreasePattern flat = flat_vertex(sectors);
+  const Topology topology = build_topology(flat);
+  std::vector<double> h(flat.num_edges(), 0.0);
+  for (int i = 0; i + 1 < 6; ++i) h[i + 1] = h[i] + steps[i];
+  const ThickHeightSheet sheet = thick_sheet_from_hinge_heights(flat, topology, h);
+  const ClosureSystem system(sheet.pattern, sheet.topology, sheet.options);
+  double worst = 0.0;
+  for (int k = 1; k < 20; ++k) {
+    const std::vector<double> rho = zero(kPi * k / 20);
+    Eigen::VectorXd fold = Eigen::VectorXd::Zero(flat.num_edges());
+    for (int i = 0; i < 6; ++i) fold[i] = rho[i];
+    worst = std::max(worst, system.residual(system.unknowns_from_edges(sheet.sheet_edge_angles(fold))).cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+// Why the pattern is analysed as a network of loops: the hinge heights of these models do
+// not agree across the traditional waterbomb pattern for any D thickness, even at mu = 1.
+// Every D's two midline creases are crease 0 of a W, and all W profiles are tied together by
+// the W-W creases, so both midlines of a D would need one height, which its Bricard profile
+// (0 and -2 t2) does not allow.
+TEST(ThickWaterbombPattern, HingeHeightsOfTheModelsDisagreeAcrossThePattern) {
+  const Pattern p;
+  const double q = 0.25 * kPi;
+  EXPECT_LE(single_vertex_residual({q, 2 * q, q, q, 2 * q, q}, d_steps(0.1, 0.05),
+                                   [&](double r) { return diamond_zero_thickness(q, r); }),
+            1e-12);
+  EXPECT_LE(single_vertex_residual({2 * q, q, q, q, q, 2 * q}, w_steps(1.0, 0.1),
+                                    [](double r) {
+                                      std::vector<double> rho = waterbomb_zero_thickness(-r);
+                                      for (double& x : rho) x = -x;
+                                      return rho;
+                                    }),
+            1e-12);
+  for (double mu : {1.0, 0.5})
+    for (const auto& [t1, t2] : {std::pair{0.1, 0.05}, std::pair{0.2, 0.1}, std::pair{0.05, 0.3}}) {
+      const WaterbombNetwork net = waterbomb_network(p.flat, p.topology, mu, 0.1, t1, t2);
+      std::vector<std::vector<double>> steps(p.flat.num_vertices());
+      for (std::size_t l = 0; l < net.vertex_of_loop.size(); ++l) {
+        const int v = net.vertex_of_loop[l];
+        const Fan& fan = p.topology.stars[v].fans[0];
+        const int k0 = static_cast<int>(std::find(fan.edges.begin(), fan.edges.end(), net.creases[l][0]) - fan.edges.begin());
+        const std::vector<double> model = net.kind[l] == WaterbombVertexKind::kD ? d_steps(t1, t2) : w_steps(mu, 0.1);
+        steps[v].assign(6, 0.0);
+        for (int i = 0; i < 6; ++i) steps[v][(k0 + i) % 6] = model[i];
+      }
+      EXPECT_THROW(hinge_heights_from_steps(p.flat, p.topology, steps), HingeHeightConflict) << "mu " << mu << " t1 " << t1 << " t2 " << t2;
+    }
+}
 
 TEST(ThickWaterbombPattern, ZeroThicknessUniformMotionClosesTheGeneralSolver) {
   const Pattern p;
