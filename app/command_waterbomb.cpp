@@ -11,7 +11,8 @@
 // --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
 // every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
 // in the split fold's valid range. The split fold's switching force is the general model's
-// (split_fold_switching_force); no stiffness or rest-angle design for split folds yet.
+// (split_fold_switching_force); --target-switching-force designs k_m for it too
+// (split_fold_mountain_stiffness_for_switching_force); no rest-angle design for split folds yet.
 // --target-switching-force F --design theta0 (plain base, replaces --theta0-deg): the rest angle
 // whose switching force is F (waterbomb_rest_design.hpp), confirmed on the general model.
 // --target-second-state-deg T2 (plain base, replaces --theta0-deg): the rest angle theta0 whose
@@ -313,7 +314,7 @@ void add_waterbomb_command(CLI::App& app) {
     const bool rest_by_force = target->count() > 0 && a->design == "theta0";
     if (rest_by_force && theta0_opt->count() > 0)
       throw InputError("--design", "theta0 designs the rest angle: give it without --theta0-deg");
-    if (rest_by_force && split_fold) throw InputError("--split-deg", "--target-switching-force is not available for split folds yet");
+    if (rest_by_force && split_fold) throw InputError("--split-deg", "--design theta0 is not available for split folds yet (--design k_m is)");
     const bool design_rest = second->count() > 0;
     if (design_rest && theta0_opt->count() > 0)
       throw InputError("--target-second-state-deg", "designs the rest angle: give it without --theta0-deg");
@@ -379,8 +380,8 @@ void add_waterbomb_command(CLI::App& app) {
     const double theta0 = design_rest || rest_by_force ? rest_design.theta0 : split_fold ? std::min(std::max(to_radians(a->theta0_deg), split_range.theta_min), split_range.theta_max)
                                      : std::min(to_radians(a->theta0_deg), kPi - kPi / a->n);
     if (samples->count() > 0 && a->curve.empty() && a->plot.empty()) throw InputError("--samples", "needs --curve or --plot");
-    if (split_fold && target->count() > 0)
-      throw InputError("--split-deg", "--target-switching-force is not available for split folds yet");
+    if (split_fold && target->count() > 0 && !(theta0 < kPi / 2 - 2e-4))
+      throw InputError("--target-switching-force", "needs a rest state before flat (--theta0-deg < 90)");
     if (a->samples < 3 || a->samples > 2001)
       throw InputError("--samples", "must be between 3 and 2001, got " + std::to_string(a->samples));
     OutputSet outputs;
@@ -499,6 +500,13 @@ void add_waterbomb_command(CLI::App& app) {
         throw NoAnswerError("--target-switching-force: the designed theta0 switches " + round_trip_text(miss) + " away from the target", miss);
       j["design"] = {{"target_switching_force", a->target_switching_force}, {"theta0_deg", a->theta0_deg}, {"k_m", k_m}, {"k_v", k_v},
                      {"switching_force", sw.force}};
+    } else if (target->count() > 0 && split_fold) {
+      if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
+        throw InputError("--target-switching-force", "must be a finite number > 0");
+      if (!(k_v > 0.0)) throw InputError("--k-v", "must be > 0 for --target-switching-force");
+      const double k_m_design =
+          waterbomb::split_fold_mountain_stiffness_for_switching_force(a->n, b, theta0, k_v, a->target_switching_force);
+      j["design"] = {{"target_switching_force", a->target_switching_force}, {"k_m", k_m_design}, {"k_v", k_v}};
     } else if (target->count() > 0) {
       if (!std::isfinite(a->target_switching_force) || a->target_switching_force <= 0.0)
         throw InputError("--target-switching-force", "must be a finite number > 0");

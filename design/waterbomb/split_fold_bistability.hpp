@@ -119,6 +119,14 @@ struct SplitFoldSwitching {
 };
 SplitFoldSwitching split_fold_switching_force(int n, double b, double theta0, double k_m, double k_v);
 
+// The mountain stiffness k_m (k_v fixed, > 0) whose split-fold switching force is `target` (> 0):
+// at every theta the push is linear in k_m with a mountain term >= 0 before flat (as
+// waterbomb_switching.hpp), so the switching force grows with k_m: bracketed (k_m = 0, then
+// k_v x 4^j) and solved by TOMS 748 to 1e-13 relative, then checked: its switching force within
+// 1e-9 x target. Throws InputError ("target", "k_v", and as split_fold_switching_force) and
+// NoAnswerError when k_m = 0 already switches above the target or no k_m up to 1e12 k_v reaches it.
+double split_fold_mountain_stiffness_for_switching_force(int n, double b, double theta0, double k_v, double target);
+
 struct SplitFoldCurve {
   std::vector<CurveSample> samples;
   int unchecked = 0;

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -69,7 +70,8 @@ TEST(WaterbombSplitCli, BadInputExitsTwoNamingTheFlag) {
       {"--n 2 --split-deg 5 --theta0-deg 60", "--n"},
       {"--n 4 --split-deg 20 --theta0-deg 5", "--theta0-deg"},      // below theta* = 10.16 deg
       {"--n 4 --split-deg 5 --theta0-deg 137", "--theta0-deg"},     // above theta_max = 136.53 deg
-      {"--n 4 --split-deg 5 --theta0-deg 60 --target-switching-force 1", "--split-deg"},
+      {"--n 4 --split-deg 5 --theta0-deg 100 --target-switching-force 1", "--target-switching-force"},
+      {"--n 4 --split-deg 5 --theta0-deg 60 --target-switching-force -1", "--target-switching-force"},
       {"--n 4 --split-deg 5 --theta0-deg 60 --k-m -1 --k-v 1", "--k-m"},
       {"--n 4 --split-deg 5 --theta0-deg 60 --samples 11", "--samples"},
   };
@@ -118,6 +120,22 @@ TEST(WaterbombSplitCli, PlotWritesCsvJsonAndPng) {
     }
   }
   fs::remove_all(dir);
+}
+
+// --target-switching-force on a split fold: the designed k_m, fed back, switches at the target.
+TEST(WaterbombSplitCli, DesignedStiffnessSwitchesAtTheTarget) {
+  const auto r = test::run_command(test::cli() + " waterbomb --n 4 --split-deg 5 --theta0-deg 60 --target-switching-force 8 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double k_m = nlohmann::json::parse(r.out)["design"]["k_m"].get<double>();
+  char km[64];
+  std::snprintf(km, sizeof km, "%.17g", k_m);
+  const auto f = test::run_command(test::cli() + " waterbomb --n 4 --split-deg 5 --theta0-deg 60 --k-m " + km + " --k-v 1 --json");
+  ASSERT_EQ(f.status, 0) << f.err;
+  EXPECT_NEAR(nlohmann::json::parse(f.out)["switching_force"]["force"].get<double>(), 8.0, 1e-9 * 8);
+  // Below what k_m = 0 gives: exit 3.
+  const auto low = test::run_command(test::cli() + " waterbomb --n 4 --split-deg 5 --theta0-deg 60 --target-switching-force 0.01");
+  EXPECT_EQ(low.status, 3) << low.err;
+  EXPECT_TRUE(low.out.empty());
 }
 
 // A failed command writes nothing into DIR; an output on an input or on another output is refused.
