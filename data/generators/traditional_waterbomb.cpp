@@ -18,8 +18,8 @@ enum class Kind { Diagonal, Midline, Side };
 }  // namespace
 
 CreasePattern traditional_waterbomb(const TraditionalWaterbombParams& params) {
-  require(params.rows >= 1 && params.rows <= 200, "rows", "must be between 1 and 200, got " + std::to_string(params.rows));
-  require(params.cols >= 1 && params.cols <= 200, "cols", "must be between 1 and 200, got " + std::to_string(params.cols));
+  require(params.rows >= 1 && params.rows <= 200, "rows", std::string("must be between 1 and 200, got ") + std::to_string(params.rows));
+  require(params.cols >= 1 && params.cols <= 200, "cols", std::string("must be between 1 and 200, got ") + std::to_string(params.cols));
   using Point = std::pair<int, int>;  // (y, x): sorted by row first
   // Every crease piece with its kind and how many squares have it on their side.
   std::map<std::pair<Point, Point>, std::pair<Kind, int>> pieces;
@@ -64,7 +64,7 @@ CreasePattern traditional_waterbomb(const TraditionalWaterbombParams& params) {
   g["kind"] = "traditional_waterbomb";
   g["rows"] = params.rows;
   g["cols"] = params.cols;
-  return finish_pattern(std::move(p), "Traditional waterbomb " + std::to_string(params.rows) + "x" + std::to_string(params.cols),
+  return finish_pattern(std::move(p), std::string("Traditional waterbomb ") + std::to_string(params.rows) + "x" + std::to_string(params.cols),
                         "six-crease waterbomb bases in shifted rows; D and W vertices", g);
 }
 

@@ -41,7 +41,7 @@ std::vector<double> per_loop_inf(const Eigen::VectorXd& r, int loops) {
 ThickNetworkMobility thick_network_mobility(const ThickPattern& pattern, const Eigen::VectorXd& creases,
                                             double closure_tolerance, const RankOptions& rank_options) {
   if (creases.size() != pattern.num_creases)
-    throw std::invalid_argument("thick network mobility: expected " + std::to_string(pattern.num_creases) + " fold angles");
+    throw std::invalid_argument(std::string("thick network mobility: expected ") + std::to_string(pattern.num_creases) + " fold angles");
   const ThickClosureSystem system(pattern, holding_free(pattern, creases, -1));
   const Eigen::VectorXd x = system.unknowns_from_creases(creases);
   Eigen::VectorXd r;
@@ -89,7 +89,7 @@ ThickNetworkMobility thick_network_mobility(const ThickPattern& pattern, const E
 ThickHoldResult thick_network_hold(const ThickPattern& pattern, int held_crease, double value, const Eigen::VectorXd& start,
                                    double tolerance, int max_iterations) {
   if (start.size() != pattern.num_creases)
-    throw std::invalid_argument("thick network hold: expected " + std::to_string(pattern.num_creases) + " fold angles");
+    throw std::invalid_argument(std::string("thick network hold: expected ") + std::to_string(pattern.num_creases) + " fold angles");
   if (held_crease < 0 || held_crease >= pattern.num_creases) throw std::invalid_argument("thick network hold: held crease out of range");
   Eigen::VectorXd state = start;
   state[held_crease] = value;

@@ -40,7 +40,7 @@ WaterbombNetwork waterbomb_network(const CreasePattern& flat, const Topology& to
     const int kd = match(fan.sectors, d_model.sectors);
     const int kw = kd < 0 ? match(fan.sectors, w_model.sectors) : -1;
     if (kd < 0 && kw < 0)
-      throw std::invalid_argument("waterbomb network: interior vertex " + std::to_string(v) + " is neither a D nor a W vertex");
+      throw std::invalid_argument(std::string("waterbomb network: interior vertex ") + std::to_string(v) + " is neither a D nor a W vertex");
     const bool is_d = kd >= 0;
     const int k0 = is_d ? kd : kw;
     const ThickLoop& model = is_d ? d_model.thick.loops[0] : w_model.thick.loops[0];
