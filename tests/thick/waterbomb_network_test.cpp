@@ -232,6 +232,23 @@ TEST(ThickWaterbombPattern, MuOneHalfLosesMobilityAndTheWVerticesAreNamed) {
   const ThickNetworkMobility flat_mu1 = thick_network_mobility(p.network(1.0).thick, Eigen::VectorXd::Zero(p.flat.num_edges()), 1e-12);
   EXPECT_EQ(flat.dof, flat_mu1.dof);  // first order cannot tell them apart
 
+  // From perturbed starts (every crease moved by up to 0.15 rad) the same driver angle is
+  // reached with closure at mu = 1 and stays open at mu = 1/2.
+  const WaterbombNetwork net1 = p.network(1.0);
+  double open_least = 1e300, closed_worst = 0.0;
+  for (double rho : {0.3, 0.8})
+    for (int seed = 1; seed <= 4; ++seed) {
+      Eigen::VectorXd start = waterbomb_network_uniform_state(p.flat, net, rho);
+      for (Eigen::Index e = 0; e < start.size(); ++e)
+        if (start[e] != 0.0) start[e] += 0.15 * std::sin(12.9898 * (e + 1) * seed + 78.233 * seed);
+      const int driver = net.creases[0][0];
+      open_least = std::min(open_least, thick_network_hold(net.thick, driver, rho, start).residual);
+      closed_worst = std::max(closed_worst, thick_network_hold(net1.thick, driver, rho, start).residual);
+    }
+  EXPECT_GT(open_least, 1e-5);
+  EXPECT_LE(closed_worst, 1e-12);
+  std::printf("  from 8 perturbed starts: mu = 1/2 least residual %.2e, mu = 1 closes to %.1e\n", open_least, closed_worst);
+
   const Trace t = trace(p, net, 1.0, 20);
   EXPECT_TRUE(t.all_stationary);
   EXPECT_GT(t.least_residual, 1e-5);
