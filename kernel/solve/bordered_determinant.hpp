@@ -37,6 +37,11 @@ class BorderedDeterminantMonitor {
   const Eigen::VectorXd& tangent() const { return t_; }
 
  private:
+  Step svd_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& along);
+  // The common end of both forms at an applicable point: g's sign test against the last
+  // point, then (J, t, U) become the reference of the next pair.
+  Step advance(const Eigen::MatrixXd& J, Eigen::VectorXd t, Eigen::MatrixXd U, const Eigen::VectorXd& along);
+
   double dof_tolerance_ = 1e-9;  // relative to sigma_max, as jacobian_rank's default cut
   bool ready_ = false;
   Eigen::MatrixXd U_, J_;
