@@ -70,10 +70,12 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 // command. Tokens with '/' are dropped, so every path stays inside the private directory.
 // Flags whose only effect is more work of the same kind (waterbomb --curve/--samples: up to
 // 2001 loaded equilibria on a 360-crease vertex; energy --starts: up to 1000 minimisations)
-// and sorce --optimize/--steps: a search of ~200 joint designs, a trace of up to 2000 steps)
-// are dropped too, and waterbomb --n is held at most 24 (n = 180 checks each state on a
-// 360-crease vertex: ~6 s in Release, far more under ASan): a legal run of minutes would count
-// as a libFuzzer timeout (-timeout=30).
+// and sorce --optimize/--steps: a search of ~200 joint designs, a trace of up to 2000 steps;
+// waterbomb --sweep-*: up to 400 analyses, and --plot: a Python process per run; metamaterial
+// --cross-check: a traced tessellation of up to 2000 steps) are dropped too, and waterbomb
+// --n is held at most 24 (n = 180 checks each state on a 360-crease vertex: ~6 s in Release,
+// far more under ASan), 12 for a split-fold base: a legal run of minutes would count as a
+// libFuzzer timeout (-timeout=30).
 std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"rigidfold"};
   if (size == 0) return args;
@@ -93,7 +95,9 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::string token;
   const auto flush = [&] {
     const bool costly = token.rfind("--curve", 0) == 0 || token.rfind("--samples", 0) == 0 || token.rfind("--starts", 0) == 0 ||
-                        token.rfind("--optimize", 0) == 0 || token.rfind("--steps", 0) == 0;
+                        token.rfind("--optimize", 0) == 0 || token.rfind("--steps", 0) == 0 ||
+                        token.rfind("--sweep", 0) == 0 || token.rfind("--cross-check", 0) == 0 ||
+                        (args.size() > 1 && args[1] == "waterbomb" && token.rfind("--plot", 0) == 0);
     if (!token.empty() && !costly && token.find('/') == std::string::npos && token.find('\0') == std::string::npos &&
         args.size() < 24)
       args.push_back(token);
@@ -104,7 +108,12 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     else token.push_back(static_cast<char>(data[i]));
   }
   flush();
-  if (args.size() > 1 && args[1] == "waterbomb")
+  if (args.size() > 1 && args[1] == "waterbomb") {
+    // A split-fold base checks every state on the 4n-crease general model: n = 24 takes 7.6 s
+    // in Release (with --target-switching-force), n = 12 0.7 s; so 12 with --split-deg.
+    bool split = false;
+    for (const std::string& a : args) split = split || a.rfind("--split-deg", 0) == 0;
+    const int most = split ? 12 : 24;
     for (std::size_t i = 2; i < args.size(); ++i) {
       // The value of --n, as "--n V" or "--n=V", read the way a number may be written (hex,
       // exponent): anything that could be more than 24 becomes 24.
@@ -119,8 +128,9 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
       const std::string text = value->substr(prefix.size());
       const double as_double = std::strtod(text.c_str(), nullptr);
       const long long as_integer = std::strtoll(text.c_str(), nullptr, 0);
-      if (!(as_double <= 24.0) || as_integer > 24 || text.size() > 3) *value = prefix + "24";
+      if (!(as_double <= most) || as_integer > most || text.size() > 3) *value = prefix + std::to_string(most);
     }
+  }
   return args;
 }
 
