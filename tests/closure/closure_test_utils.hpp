@@ -35,6 +35,18 @@ inline CreasePattern single_vertex_pattern(const std::vector<double>& directions
   return p;
 }
 
+// The same from the sectors (radians, summing to 2 pi): crease i at the sum of sectors 0..i-1,
+// creases 0..n-1 = edges 0..n-1.
+inline CreasePattern single_vertex_from_sectors(const std::vector<double>& sectors, Assignment a = Assignment::Unassigned) {
+  std::vector<double> directions;
+  double direction = 0.0;
+  for (double s : sectors) {
+    directions.push_back(direction);
+    direction += s;
+  }
+  return single_vertex_pattern(directions, a);
+}
+
 // Random crease directions with every sector in [min_sector, ...): n sorted angles.
 inline std::vector<double> random_directions(int n, std::mt19937_64& rng, double min_sector = 0.3) {
   for (;;) {

@@ -12,6 +12,7 @@
 #include <functional>
 #include <numbers>
 
+#include "tests/closure/closure_test_utils.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/rank.hpp"
@@ -23,29 +24,6 @@ namespace rigidfold {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Flat single vertex with the model's sectors, creases 0..n-1 = edges 0..n-1.
-CreasePattern flat_vertex(const std::vector<double>& sectors) {
-  CreasePattern p;
-  const int n = static_cast<int>(sectors.size());
-  p.vertices.push_back(Eigen::Vector3d::Zero());
-  double direction = 0.0;
-  for (int i = 0; i < n; ++i) {
-    p.vertices.emplace_back(std::cos(direction), std::sin(direction), 0.0);
-    direction += sectors[i];
-  }
-  for (int i = 0; i < n; ++i) {
-    p.edges.push_back({0, i + 1});
-    p.assignments.push_back(Assignment::Unassigned);
-  }
-  for (int i = 0; i < n; ++i) {
-    p.edges.push_back({i + 1, (i + 1) % n + 1});
-    p.assignments.push_back(Assignment::Boundary);
-    p.faces.push_back({0, i + 1, (i + 1) % n + 1});
-  }
-  p.fold_angles.assign(p.edges.size(), std::nullopt);
-  return p;
-}
 
 struct HeightModel {
   std::vector<double> heights;  // per flat edge
@@ -63,7 +41,7 @@ Eigen::VectorXd fold_vector(const CreasePattern& flat, const std::vector<double>
 // gives the same heights for both of its signs, so it is counted twice.
 std::vector<HeightModel> closing_height_models(const ThickVertexModel& model, const std::function<std::vector<double>(double)>& zero) {
   const int n = static_cast<int>(model.sectors.size());
-  const CreasePattern flat = flat_vertex(model.sectors);
+  const CreasePattern flat = testing::single_vertex_from_sectors(model.sectors);
   const Topology topology = build_topology(flat);
   std::vector<double> a(n);
   for (int i = 0; i < n; ++i) a[i] = std::abs(model.thick.loops[0].joints[i].link.length);
@@ -92,7 +70,7 @@ std::vector<HeightModel> closing_height_models(const ThickVertexModel& model, co
 void expect_realisable(const ThickVertexModel& model, const std::function<std::vector<double>(double)>& zero) {
   const std::vector<HeightModel> found = closing_height_models(model, zero);
   ASSERT_FALSE(found.empty()) << model.name << ": no hinge heights fold with the zero-thickness angles";
-  const CreasePattern flat = flat_vertex(model.sectors);
+  const CreasePattern flat = testing::single_vertex_from_sectors(model.sectors);
   const ThickHeightSheet sheet = thick_sheet_from_hinge_heights(flat, build_topology(flat), found[0].heights);
   const ThickMobilityReport report =
       thick_mobility(sheet, fold_vector(flat, zero(model.mountain_valley[0] * 1.0)), {}, 1e-12);
@@ -121,7 +99,7 @@ TEST(ThickVertexHeights, WaterbombMuOneHalfIsMobileAloneButOffTheZeroThicknessMo
   const int n = 6;
   const double t = 0.1, mu = 0.5;
   const std::vector<double> a{t * (1 + mu), t, t * mu, t * mu, t, t * (1 + mu)};
-  const CreasePattern flat = flat_vertex(unit.sectors);
+  const CreasePattern flat = testing::single_vertex_from_sectors(unit.sectors);
   std::vector<double> h(flat.num_edges(), 0.0);
   for (int i = 0; i + 1 < n; ++i) h[i + 1] = h[i] + (found[0].heights[i + 1] > found[0].heights[i] ? 1.0 : -1.0) * a[i];
   ASSERT_NEAR(std::abs(h[n - 1] - h[0]), a[n - 1], 1e-15);  // the heights come back round
