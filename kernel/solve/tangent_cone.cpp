@@ -4,6 +4,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <thread>
 
 #include "kernel/closure/closure_second_order.hpp"
@@ -173,9 +174,24 @@ TangentCone tangent_cone(const ClosureSystem& system, const Topology& topology, 
       for (int i = from; i < count; i += threads) converge_start(H, accept, results[i]);
     };
     if (threads > 1) {
-      std::thread helper(run, 1);
-      run(0);
+      // An exception in the helper (std::bad_alloc under a memory limit) must reach the caller,
+      // not std::terminate: it is carried over and rethrown after the join.
+      std::exception_ptr helper_failed;
+      std::thread helper([&] {
+        try {
+          run(1);
+        } catch (...) {
+          helper_failed = std::current_exception();
+        }
+      });
+      try {
+        run(0);
+      } catch (...) {
+        helper.join();
+        throw;
+      }
       helper.join();
+      if (helper_failed) std::rethrow_exception(helper_failed);
     } else {
       run(0);
     }
