@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "design/waterbomb/waterbomb_switching.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/constrained_equilibrium.hpp"
 #include "kernel/energy/crease_energy.hpp"
@@ -380,30 +381,8 @@ SplitFoldSwitching split_fold_switching_force(int n, double b, double theta0, do
 }
 
 double split_fold_mountain_stiffness_for_switching_force(int n, double b, double theta0, double k_v, double target) {
-  if (!(target > 0.0 && std::isfinite(target))) throw InputError("target", "the switching force must be a finite number > 0");
-  if (!(k_v > 0.0 && std::isfinite(k_v))) throw InputError("k_v", "must be a finite number > 0");
-  auto f = [&](double k_m) { return split_fold_switching_force(n, b, theta0, k_m, k_v).force - target; };
-  const double at_zero = f(0.0);
-  if (at_zero > 0.0)
-    throw NoAnswerError("even k_m = 0 switches at " + round_trip_text(at_zero + target) + ", above the target " +
-                            round_trip_text(target),
-                        at_zero);
-  double hi = k_v;
-  double f_hi = f(hi);
-  while (f_hi < 0.0) {
-    hi *= 4.0;
-    if (hi > 1e12 * k_v) throw NoAnswerError("no k_m up to 1e12 k_v reaches the target switching force", target);
-    f_hi = f(hi);
-  }
-  std::uintmax_t iterations = 100;
-  const auto bracket = boost::math::tools::toms748_solve(
-      f, 0.0, hi, at_zero, f_hi, [](double x, double y) { return std::fabs(x - y) <= 1e-13 * std::max(1.0, std::fabs(y)); },
-      iterations);
-  const double k_m = 0.5 * (bracket.first + bracket.second);
-  const double miss = std::fabs(f(k_m));
-  if (!(miss <= 1e-9 * target))
-    throw NoAnswerError("the solved k_m switches " + round_trip_text(miss) + " away from the target", miss);
-  return k_m;
+  return mountain_stiffness_for_force(
+      [&](double k_m) { return split_fold_switching_force(n, b, theta0, k_m, k_v).force; }, k_v, target);
 }
 
 SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, double k_v, int samples) {

@@ -59,22 +59,29 @@ SwitchingForce switching_force_checked(int n, double theta0, double k_m, double 
 }
 
 double mountain_stiffness_for_switching_force(int n, double theta0, double k_v, double target, double r) {
+  return mountain_stiffness_for_force(
+      [&](double k_m) { return switching_force(springs_at_rest_theta(n, theta0, k_m, k_v), theta0, r).force; }, k_v, target);
+}
+
+double mountain_stiffness_for_force(const std::function<double(double)>& switching_force_of, double k_v, double target) {
   if (!(target > 0.0 && std::isfinite(target))) throw InputError("target", "the switching force must be a finite number > 0");
   if (!(k_v > 0.0 && std::isfinite(k_v))) throw InputError("k_v", "must be a finite number > 0");
-  auto f = [&](double k_m) { return switching_force(springs_at_rest_theta(n, theta0, k_m, k_v), theta0, r).force - target; };
+  auto f = [&](double k_m) { return switching_force_of(k_m) - target; };
   const double at_zero = f(0.0);
   if (at_zero > 0.0)
     throw NoAnswerError("even k_m = 0 switches at " + round_trip_text(at_zero + target) + ", above the target " +
                             round_trip_text(target),
                         at_zero);
   double hi = k_v;
-  while (f(hi) < 0.0) {
+  double f_hi = f(hi);
+  while (f_hi < 0.0) {
     hi *= 4.0;
     if (hi > 1e12 * k_v) throw NoAnswerError("no k_m up to 1e12 k_v reaches the target switching force", target);
+    f_hi = f(hi);
   }
   std::uintmax_t iterations = 200;
   const auto [a, b] = boost::math::tools::toms748_solve(
-      f, 0.0, hi, at_zero, f(hi), [](double x, double y) { return std::fabs(x - y) <= 1e-13 * std::max(1.0, std::fabs(y)); },
+      f, 0.0, hi, at_zero, f_hi, [](double x, double y) { return std::fabs(x - y) <= 1e-13 * std::max(1.0, std::fabs(y)); },
       iterations);
   const double k_m = 0.5 * (a + b);
   // The answer's own check: its switching force is the target.

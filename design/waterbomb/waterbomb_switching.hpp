@@ -13,6 +13,8 @@
 // (Boost.Math) to a relative 1e-13.
 // Units: angles radians; r (valley crease length) in the length unit; k in energy / rad^2;
 // forces in energy unit / length unit.
+#include <functional>
+
 #include "design/waterbomb/waterbomb_energy.hpp"
 
 namespace rigidfold::waterbomb {
@@ -42,5 +44,11 @@ SwitchingForce switching_force_checked(int n, double theta0, double k_m, double 
 // (> 0). Throws InputError for bad input and NoAnswerError when even k_m = 0 switches above
 // the target (the residual is that force) or no k_m up to 1e12 k_v reaches it.
 double mountain_stiffness_for_switching_force(int n, double theta0, double k_v, double target, double r);
+
+// The search behind it, for any base whose switching force rises with k_m (the split-fold
+// base's too): switching_force_of(k_m) is evaluated at 0, then at k_v, 4 k_v, ... until it
+// reaches the target, and TOMS 748 solves between; the answer is checked forward to 1e-9
+// relative. Same errors as above.
+double mountain_stiffness_for_force(const std::function<double(double)>& switching_force_of, double k_v, double target);
 
 }  // namespace rigidfold::waterbomb

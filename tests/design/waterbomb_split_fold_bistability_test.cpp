@@ -137,8 +137,12 @@ TEST(WaterbombSplitFoldBistability, CurveCheckedOnTheGeneralModel) {
   for (const auto& s : c.samples) {
     if (!s.checked) continue;
     worst = std::max(worst, std::fabs(s.force - s.force_closed_form) / std::max(1.0, std::fabs(s.force)));
-    if (s.theta > th0 + 1e-6 && s.theta < kPi / 2) EXPECT_GT(s.force, 0.0) << to_degrees(s.theta);
-    if (s.theta < th0 - 1e-6) EXPECT_LT(s.force, 0.0) << to_degrees(s.theta);
+    if (s.theta > th0 + 1e-6 && s.theta < kPi / 2) {
+      EXPECT_GT(s.force, 0.0) << to_degrees(s.theta);
+    }
+    if (s.theta < th0 - 1e-6) {
+      EXPECT_LT(s.force, 0.0) << to_degrees(s.theta);
+    }
   }
   RecordProperty("split_curve_worst_force_gap", std::to_string(worst));
 }
@@ -168,8 +172,11 @@ TEST(WaterbombSplitFoldBistability, SwitchingForceTendsToHalfThePlainBase) {
     }
   const auto sw = waterbomb::split_fold_switching_force(4, to_radians(5.0), to_radians(60.0), 2.0, 1.0);
   const auto curve = waterbomb::split_fold_curve(4, to_radians(5.0), to_radians(60.0), 2.0, 1.0, 101);
-  for (const auto& s : curve.samples)
-    if (s.checked && s.theta > to_radians(60.0) && s.theta < kPi / 2) EXPECT_LE(s.force, sw.force * (1 + 1e-9)) << to_degrees(s.theta);
+  for (const auto& s : curve.samples) {
+    if (s.checked && s.theta > to_radians(60.0) && s.theta < kPi / 2) {
+      EXPECT_LE(s.force, sw.force * (1 + 1e-9)) << to_degrees(s.theta);
+    }
+  }
   EXPECT_THROW(waterbomb::split_fold_switching_force(4, to_radians(5.0), to_radians(100.0), 1.0, 1.0), InputError);
 }
 
