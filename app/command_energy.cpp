@@ -13,7 +13,6 @@
 // the letters, each minimised on the loop-closure manifold with no symmetry imposed; every
 // state printed has passed its checks (closure <= 1e-12 rad, stationarity, reduced Hessian
 // positive definite).
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -28,9 +27,6 @@
 #include "kernel/energy/rest_angles.hpp"
 #include "kernel/energy/stiffness_spec.hpp"
 #include "kernel/energy/load_spec.hpp"
-#include "kernel/energy/vertex_height_control.hpp"
-#include "kernel/closure/closure_system.hpp"
-#include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
@@ -77,6 +73,7 @@ void add_energy_command(CLI::App& app) {
     problem.rest_place = a->rest;
     CreaseSpringStates found;
     if (spec->count() > 0) problem.edge_stiffness = read_stiffness_spec(a->stiffness, p);  // names the file and the JSON path
+    if (load_opt->count() > 0) problem.load = read_load_spec(a->load, p, t);                // the same
     try {
       problem.rest = read_rest_state(a->rest, p, t);
       found = crease_spring_states(p, t, problem);
@@ -91,37 +88,15 @@ void add_energy_command(CLI::App& app) {
       throw;
     }
     const StableStateSearch& s = found.search;
-    // The loaded equilibria (before anything is printed).
+    // The loaded equilibria (found and checked by crease_spring_states).
     nlohmann::ordered_json loaded;
-    if (load_opt->count() > 0) {
-      const VertexHeightLoad load = read_load_spec(a->load, p, t);
-      const ClosureSystem system(p, t);
-      const CreaseSprings springs = make_crease_springs(
-          p, problem.edge_stiffness.size() ? problem.edge_stiffness : stiffness_by_assignment(p, problem.stiffness), problem.rest);
-      std::vector<Eigen::VectorXd> starts{system.unknowns_from_edges(problem.rest)};
-      for (const auto& f : s.states) starts.push_back(system.unknowns_from_edges(f.state.edge_angles));
-      std::vector<HeightControlledEquilibrium> states;
-      double best = INFINITY;
-      for (const auto& x0 : starts) {
-        HeightControlledEquilibrium eq = vertex_height_equilibrium(p, system, t, springs, load, x0);
-        if (!eq.converged) {
-          best = std::min(best, eq.constraint_residual);
-          continue;
-        }
-        bool seen = false;
-        for (const auto& other : states) seen = seen || (other.edge_angles - eq.edge_angles).lpNorm<Eigen::Infinity>() <= 1e-6;
-        if (!seen) states.push_back(std::move(eq));
-      }
-      if (states.empty())
-        throw NoAnswerError("--load: no loaded equilibrium converged from " + std::to_string(starts.size()) +
-                                " starts (the rest state and each stable state; smallest constraint residual)",
-                            best);
-      std::sort(states.begin(), states.end(), [](const auto& x, const auto& y) { return x.energy < y.energy; });
+    if (problem.load) {
+      const VertexHeightLoad& load = *problem.load;
       loaded["vertex"] = load.vertex;
       loaded["height"] = load.height;
       loaded["supports"] = load.support_edges;
       nlohmann::ordered_json list = nlohmann::ordered_json::array();
-      for (const auto& eq : states) {
+      for (const auto& eq : found.loaded) {
         nlohmann::ordered_json e;
         e["energy"] = eq.energy;
         e["force"] = eq.force;

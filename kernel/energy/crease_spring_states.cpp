@@ -1,8 +1,10 @@
 #include "kernel/energy/crease_spring_states.hpp"
 
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/crease_energy.hpp"
@@ -54,6 +56,26 @@ CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topo
   if (out.search.states.empty())
     throw NoAnswerError("no stable state reached from " + std::to_string(out.search.starts) + " starts (" +
                         std::to_string(out.search.starts_converged) + " minimisations converged)");
+  if (problem.load) {
+    std::vector<Eigen::VectorXd> starts{system.unknowns_from_edges(problem.rest)};
+    for (const auto& f : out.search.states) starts.push_back(system.unknowns_from_edges(f.state.edge_angles));
+    double best = INFINITY;
+    for (const auto& x0 : starts) {
+      HeightControlledEquilibrium eq = vertex_height_equilibrium(pattern, system, topology, springs, *problem.load, x0);
+      if (!eq.converged) {
+        best = std::min(best, eq.constraint_residual);
+        continue;
+      }
+      bool seen = false;
+      for (const auto& other : out.loaded) seen = seen || (other.edge_angles - eq.edge_angles).lpNorm<Eigen::Infinity>() <= 1e-6;
+      if (!seen) out.loaded.push_back(std::move(eq));
+    }
+    if (out.loaded.empty())
+      throw NoAnswerError("--load: no loaded equilibrium converged from " + std::to_string(starts.size()) +
+                              " starts (the rest state and each stable state; smallest constraint residual)",
+                          best);
+    std::sort(out.loaded.begin(), out.loaded.end(), [](const auto& x, const auto& y) { return x.energy < y.energy; });
+  }
   return out;
 }
 

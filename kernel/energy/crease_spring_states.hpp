@@ -6,10 +6,13 @@
 //
 // Units: radians; stiffness in energy per rad^2; energy in the stiffness unit times rad^2.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "kernel/energy/crease_stiffness.hpp"
 #include "kernel/energy/stable_state_search.hpp"
+#include "kernel/energy/vertex_height_control.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -32,18 +35,25 @@ struct CreaseSpringProblem {
   Eigen::VectorXd rest;              // per edge, radians (FOLD sign): the springs' rest state
   std::string rest_place = "rest";   // named when the rest state is bad (the CLI passes its file)
   StableStateSearchOptions search;   // random_starts in [0, kMaxSpringStateStarts], seed
+  // A vertex held at a height (load_spec.hpp): its loaded equilibria are reached from the rest
+  // state and from each stable state, with the same springs.
+  std::optional<VertexHeightLoad> load;
 };
 
 struct CreaseSpringStates {
   double rest_closure_residual = 0.0;  // ||r(rest)||_inf, radians (<= kRestClosureTolerance)
   StableStateSearch search;            // states in increasing energy, each checked (see there)
+  // With a load: the distinct converged loaded equilibria (edge angles apart by more than
+  // 1e-6 rad), in increasing energy.
+  std::vector<HeightControlledEquilibrium> loaded;
 };
 
 // Throws InputError naming the place: "pattern" (more than kMaxSpringStateFreeCreases free
 // creases), "stiffness.mountain" / ".valley" / ".unassigned", "edge_stiffness" (wrong size;
 // "stiffness[e]" for a negative or non-finite entry), "starts", rest_place (a rest
 // state that does not close, with its residual and row; wrong size or range);
-// NoAnswerError when no start reaches a stable state.
+// NoAnswerError when no start reaches a stable state, or with a load when no loaded
+// equilibrium converges (the residual: the smallest constraint residual reached).
 CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topology& topology,
                                         const CreaseSpringProblem& problem);
 
