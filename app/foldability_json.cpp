@@ -196,6 +196,12 @@ Json foldability_json(const FoldabilityReport& r) {
                               {"witness_change_over_bound", ip.max_change_ratio},
                               {"gap_explained_by_rounding", ip.explained},
                               {"exact_data_verdict", ip.exact_data_verdict}};
+    if (ip.loop_gain_enclosure) {
+      // The witness's failing cycle, over every pattern within the boxes.
+      j["input_precision"]["loop_gain_enclosure"] = {(*ip.loop_gain_enclosure)[0], (*ip.loop_gain_enclosure)[1]};
+      j["input_precision"]["loop_gain_proof"] =
+          ip.loop_gain_proof_note.empty() ? Json("proven: the enclosure excludes 1") : Json(ip.loop_gain_proof_note);
+    }
   }
   if (r.strictness)
     j["strictness"] = {{"strict", r.strictness->strict},

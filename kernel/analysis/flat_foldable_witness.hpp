@@ -62,6 +62,10 @@ struct FlatFoldableWitness {
   // and the largest |log gain| left at the last solve.
   int loop_gain_rows = 0;
   double max_log_gain = 0.0;
+  // The box each vertex of the file may lie in (x, y; length unit): the coordinates minus
+  // and plus the moves allowed down and up. The witness lies in them, and so do the file's
+  // own vertices.
+  std::vector<Eigen::Vector2d> box_lo, box_hi;
   CreasePattern witness;              // the file's pattern with the moved coordinates
   Topology witness_topology;
 };

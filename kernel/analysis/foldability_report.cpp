@@ -5,11 +5,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "kernel/analysis/interval_loop_gain.hpp"
 #include "kernel/analysis/path_watch.hpp"
 #include "kernel/analysis/reference_mobility.hpp"
 #include "kernel/analysis/rounding_witness.hpp"
 #include "kernel/analysis/straight_line_folds.hpp"
 #include "kernel/pattern/pattern_components.hpp"
+#include "kernel/pattern/vertex_boxes.hpp"
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/solve/rank.hpp"
@@ -219,6 +221,38 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
     r.verdict = FoldabilityClass::kFoldableWithinTolerance;
     r.reason = "foldable within the input's precision: " + witness_text + ", and that pattern is " + r.reason;
   } else if (r.not_foldable()) {
+    // The witness's loop gain repeated over every pattern within the boxes of the file's
+    // rounding (interval_loop_gain.hpp): where its enclosure excludes 1, the "no" holds for
+    // the file (its own numbers lie in the boxes) and every pattern it may stand for.
+    const std::optional<Obstruction>& exact = r.obstruction ? r.obstruction->exact : std::nullopt;
+    if (r.assignment_used && exact && exact->kind == Obstruction::Kind::kLoopGain) {
+      const IntervalLoopGainProof proof = interval_loop_gain_proof(w.witness, w.witness_topology, w.box_lo, w.box_hi,
+                                                                   exact->cycle_vertices, exact->cycle_creases);
+      // The witness lies in the boxes, so its own gain (or its inverse, by the cycle's
+      // direction) must lie in the enclosure: a check of both computations.
+      const bool holds_witness =
+          proof.gain.contains(exact->loop_gain) || (exact->loop_gain != 0.0 && proof.gain.contains(1.0 / exact->loop_gain));
+      ip.loop_gain_enclosure = {proof.gain.lo, proof.gain.hi};
+      if (proof.proven && holds_witness) {
+        r.verdict = FoldabilityClass::kNotFoldableProof;
+        r.is_proof = true;
+        r.dof = 0;
+        std::string cycle;
+        for (int v : exact->cycle_vertices) cycle += " " + std::to_string(v);
+        r.reason = "not foldable, for every pattern within the input's precision: around vertices" + cycle +
+                   " the first-order rates of the degree-4 vertices, in the one mode the letters allow at each, give a "
+                   "loop gain within [" + short_text(proof.gain.lo) + ", " + short_text(proof.gain.hi) +
+                   "] (interval arithmetic over the boxes: " + bounds_text + "), never 1, so no rigid motion from flat "
+                   "that keeps the letters folds any crease at those vertices; on a flat-foldable witness within the "
+                   "boxes the gain is " + short_text(exact->loop_gain);
+        r.model_name += " (with an interval loop-gain proof over the input's precision)";
+        ip.exact_data_verdict = "not foldable: the file's own numbers lie within the boxes the proof covers";
+        r.input_precision = ip;
+        return;
+      }
+      ip.loop_gain_proof_note = proof.proven ? "the enclosure does not hold the witness's own gain (internal check failed)"
+                                             : proof.why_not;
+    }
     // A proof for the witness only: the least move makes every vertex flat-foldable but does
     // not aim at the loop gains, so a rounded Miura's witness misses gain 1 by ~1e-6 while a
     // pattern within the rounding folds. Undecided, with the witness's obstruction beside it.
@@ -232,6 +266,39 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
   }
   r.model_name += " (on a flat-foldable witness within the input's precision)";
   r.input_precision = ip;
+}
+
+// 2''. A face's cycle of degree-4 vertices whose first-order loop gain excludes 1 over every
+// pattern within the input's precision (interval_loop_gain.hpp): a proof that needs neither
+// Kawasaki nor the numerical search. False (r untouched) where no face's cycle is proven.
+bool first_order_loop_gain_report(const CreasePattern& p, const Topology& t, const FoldabilityOptions& o,
+                                  FoldabilityReport& r) {
+  if (!o.use_assignment || t.interior_vertices.empty()) return false;
+  for (const Eigen::Vector3d& v : p.vertices)
+    if (v.z() != 0.0) return false;  // a folded form: the flat state is not what the file gives
+  const VertexBoxes boxes = vertex_boxes(p, o.coordinate_tolerance);
+  const FaceCycleProof f = face_cycle_loop_gain_proof(p, t, boxes.lo, boxes.hi);
+  if (!f.proven) return false;
+  std::string cycle;
+  for (int v : f.cycle_vertices) cycle += " " + std::to_string(v);
+  r.model = FoldabilityModel::kGeneralLoopClosure;
+  r.model_name = "first-order loop gain (interval arithmetic)";
+  r.model_choice += "; a face's cycle of degree-4 vertices decides it exactly, the numerical search is not run";
+  r.verdict = FoldabilityClass::kNotFoldableProof;
+  r.is_proof = true;
+  r.dof = 0;
+  r.reason = "not foldable" + std::string(boxes.exact ? "" : ", for every pattern within the input's precision") +
+             ": around face " + std::to_string(f.face) + " (vertices" + cycle +
+             ") the first-order rates of the degree-4 vertices, in the one mode the letters allow at each, give a loop "
+             "gain within [" + short_text(f.proof.gain.lo) + ", " + short_text(f.proof.gain.hi) +
+             "] (interval arithmetic" + (boxes.exact ? std::string(" on the numbers as read") : " over the boxes") +
+             "), never 1, so no rigid motion from flat that keeps the letters folds any crease at those vertices";
+  FoldabilityObstruction ob;
+  ob.kind = "loop gain";
+  ob.message = r.reason;
+  r.obstruction = ob;
+  r.interference_checked = "not needed: no motion";
+  return true;
 }
 
 // 3. The general loop-closure verdict, with the branch explorer where it applies.
@@ -593,7 +660,7 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
           r.model_choice += "; a straight line folds alone and straight lettered lines cross: both strict and weak "
                             "foldability are decided exactly, the numerical search is not run";
           r.interference_checked = std::string(kLocalInterferenceOnly) + " (a single line folding: faces cannot cross before 180 deg)";
-        } else {
+        } else if (!first_order_loop_gain_report(pattern, topology, options, r)) {
           general_report(pattern, topology, options, r);
         }
         straight_line_report(pattern, topology, options, *lines, r);

@@ -44,6 +44,7 @@
 // kUndecided with the reason); std::bad_alloc.
 // Cost: O(creases) on the multiplier path; the general path is a few sparse Newton
 // projections and one continuation, the explorer dense SVDs (<= 400 free creases).
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -142,6 +143,10 @@ struct FoldabilityReport {
     double max_change_ratio = 0.0;      // <= 1: the gap is explained by the rounding
     bool explained = false;
     std::string exact_data_verdict;     // what the exact data gives
+    // Where the witness fails a loop gain: the enclosure of that cycle's gain over every
+    // pattern within the boxes (interval_loop_gain.hpp), and why it is not a proof if not.
+    std::optional<std::array<double, 2>> loop_gain_enclosure;
+    std::string loop_gain_proof_note;
   };
   std::optional<InputPrecision> input_precision;
   // The precision the verdict assumed of the coordinates, whatever its source

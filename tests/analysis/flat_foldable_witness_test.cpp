@@ -183,10 +183,12 @@ TEST(FlatFoldableWitness, StatedToleranceOverridesWhatTheDigitsSay) {
   }
 }
 
-TEST(FlatFoldableWitness, RoundedSquareTwistIsUndecidedNeverRigid) {
-  // The classic square twist (Type 1, rigid: loop gain far from 1) written with 3 decimals:
-  // no pattern within the rounding closes its gain, so no second witness; the first witness
-  // does not fold, which is a proof for that witness only: undecided for the file.
+TEST(FlatFoldableWitness, RoundedSquareTwistIsProvenRigidOverItsRounding) {
+  // The classic square twist (Type 1, not foldable: loop gain far from 1) written with 3
+  // decimals: no pattern within the rounding closes its gain, so no second witness; the first
+  // witness does not fold, and the same cycle's gain, enclosed by interval arithmetic over
+  // every pattern within the rounding (interval_loop_gain.hpp), excludes 1: a proof for the
+  // file. (Before the enclosure this was "undecided": a proof for the witness only.)
   generators::SquareTwistParams sp;
   sp.side = 100.0;
   sp.pleat = 100.0;
@@ -200,9 +202,12 @@ TEST(FlatFoldableWitness, RoundedSquareTwistIsUndecidedNeverRigid) {
   const Topology t = build_topology(p);
   ASSERT_GT(max_kawasaki(t), 1e-9);
   const FoldabilityReport r = check_foldability(p, t);
-  EXPECT_EQ(r.verdict, FoldabilityClass::kUndecided) << r.reason;
-  EXPECT_FALSE(r.is_proof);
+  EXPECT_EQ(r.verdict, FoldabilityClass::kNotFoldableProof) << r.reason;
+  EXPECT_TRUE(r.is_proof);
   EXPECT_NE(r.reason.find("loop gain"), std::string::npos) << r.reason;
+  ASSERT_TRUE(r.input_precision && r.input_precision->loop_gain_enclosure);
+  const auto [lo, hi] = *r.input_precision->loop_gain_enclosure;
+  EXPECT_TRUE(hi < 1.0 || lo > 1.0) << lo << " " << hi;
 }
 
 TEST(FlatFoldableWitness, DefectsBeyondTheRoundingGetNoWitness) {
