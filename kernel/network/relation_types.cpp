@@ -136,4 +136,65 @@ std::vector<std::vector<int>> closing_transmissions(int length) {
   return out;
 }
 
+int reversed_relation(int k) {
+  if (k < 1 || k > 16) throw std::invalid_argument("reversed_relation: type must be in 1..16");
+  const RelationType& t = relation_types()[k - 1];
+  for (const RelationType& r : relation_types())
+    if (r.input == t.output && r.output == t.input) return r.number;
+  return k;  // unreachable: the table holds every pair
+}
+
+bool two_fold_compatible(const std::array<int, 4>& types) {
+  for (int k : types)
+    if (k < 1 || k > 16) throw std::invalid_argument("two_fold_compatible: type must be in 1..16");
+  const auto& t = relation_types();
+  const RelationType &A = t[types[0] - 1], &B = t[types[1] - 1], &C = t[types[2] - 1], &D = t[types[3] - 1];
+  // Shared joints: a2-b2 (tau), b1-c1 (sigma), c2-d2 (tau), d1-a1 (sigma).
+  return A.output == B.output && B.input == C.input && C.output == D.output && D.input == A.input;
+}
+
+std::vector<std::vector<int>> two_fold_transmissions(int length) {
+  if (length != 2 && length != 3) throw std::invalid_argument("two_fold_transmissions: length must be 2 or 3");
+  std::vector<std::vector<int>> out;
+  for (int start = 0; start < 4; ++start) {
+    // Variants at start, start+1, ... (mod 4); the others are the base R1.
+    std::vector<int> chain(length, 2);
+    auto next = [&]() {  // odometer over types 2..16
+      for (int i = length - 1; i >= 0; --i) {
+        if (++chain[i] <= 16) return true;
+        chain[i] = 2;
+      }
+      return false;
+    };
+    do {
+      std::array<int, 4> types{1, 1, 1, 1};
+      for (int i = 0; i < length; ++i) types[(start + i) % 4] = chain[i];
+      if (!two_fold_compatible(types)) continue;
+      std::vector<int> rev(chain.rbegin(), chain.rend());
+      out.push_back(std::min(chain, rev));
+    } while (next());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+LinkageNetwork two_fold_assembly(const std::array<S4RSectors, 4>& twists) {
+  LinkageNetwork net;
+  net.joint_names = {"a1", "a2", "b1", "c2", "a3", "a4", "b3", "b4", "c3", "c4", "d3", "d4"};
+  const char* names[4] = {"A", "B", "C", "D"};
+  // Joints 1 and 2 of each linkage (network joint, sign) per (2-15); joints 3, 4 are its own.
+  const int j1[4] = {0, 2, 2, 0}, j2[4] = {1, 1, 3, 3};
+  const double s1[4] = {1, 1, -1, -1}, s2[4] = {1, -1, 1, -1};
+  for (int k = 0; k < 4; ++k) {
+    NetworkLinkage l;
+    l.name = names[k];
+    l.twists.assign(twists[k].begin(), twists[k].end());
+    l.joints = {{j1[k], s1[k], 0.0}, {j2[k], s2[k], 0.0}, {4 + 2 * k, 1.0, 0.0}, {5 + 2 * k, 1.0, 0.0}};
+    net.linkages.push_back(l);
+  }
+  validate_network(net);
+  return net;
+}
+
 }  // namespace rigidfold
