@@ -53,20 +53,30 @@ Dims<T> element1(const CorrugatedElementParams& p, const T& phi) {
   return d;
 }
 
+template <typename T>
+Dims<T> element3_at(const CorrugatedElementParams& p, const T& theta);
+
 // Element 3 (3-26, 3-27) with W = 4 B5B4' cos(B1B5B4').
 template <typename T>
 Dims<T> element3(const CorrugatedElementParams& p, const T& phi) {
+  using std::atan;
+  using std::tan;
+  const T theta = 2.0 * atan(tan(phi / 2.0) * (std::cos((p.beta + p.alpha) / 2) / std::cos((p.beta - p.alpha) / 2)));
+  return element3_at(p, theta);
+}
+
+// Element 3 (3-27) at the dihedral theta of B4B5.
+template <typename T>
+Dims<T> element3_at(const CorrugatedElementParams& p, const T& theta) {
   using std::abs;
   using std::acos;
-  using std::atan;
   using std::atan2;
   using std::cos;
   using std::sin;
   using std::sqrt;
-  using std::tan;
   const double ca = std::cos(p.alpha), sa = std::sin(p.alpha), cb = std::cos(p.beta), sb = std::sin(p.beta);
   Dims<T> d;
-  d.theta = 2.0 * atan(tan(phi / 2.0) * (std::cos((p.beta + p.alpha) / 2) / std::cos((p.beta - p.alpha) / 2)));
+  d.theta = theta;
   const T angle = acos(cb * ca + sb * sa * cos(d.theta));  // A5B5C5
   d.L = 2.0 * p.l * sin(angle / 2.0);
   const T c_bpb = (-cb + ca * cos(angle)) / (sa * sin(angle));  // cos B4PB4'
@@ -111,6 +121,24 @@ CorrugatedElementState corrugated_element(CorrugatedElement e, const CorrugatedE
   CorrugatedElementState s;
   s.phi = phi;
   s.theta = d.theta.a;
+  s.W = d.W.a;
+  s.L = d.L.a;
+  s.H = d.H.a;
+  s.dW = d.W.v[0];
+  s.dL = d.L.v[0];
+  s.dH = d.H.v[0];
+  s.nu_in = -(s.dL / s.L) / (s.dW / s.W);
+  s.nu_out = -(s.dH / s.H) / (s.dW / s.W);
+  return s;
+}
+
+CorrugatedElementState corrugated_element3_at_theta(const CorrugatedElementParams& p, double theta) {
+  check(p);
+  if (!(theta >= 0 && theta <= kPi)) throw std::invalid_argument("corrugated element: theta must lie in [0, pi]");
+  const Dims<Jet> d = element3_at(p, Jet(theta, 0));
+  CorrugatedElementState s;
+  s.phi = NAN;
+  s.theta = theta;
   s.W = d.W.a;
   s.L = d.L.a;
   s.H = d.H.a;

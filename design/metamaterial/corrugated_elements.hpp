@@ -57,6 +57,13 @@ struct CorrugatedElementState {
 CorrugatedElementState corrugated_element(CorrugatedElement element, const CorrugatedElementParams& params,
                                           double phi);
 
+// Element 3 by (3-27) alone, at the dihedral theta of B4B5 (radians, [0, pi]) instead of phi:
+// phi is NaN, the derivatives are d/dtheta (the Poisson's ratios do not depend on the
+// parameter). For the stacked metamaterial 4 (design/metamaterial/stacked_metamaterial_check.hpp),
+// whose reconstruction satisfies (3-27) but relates theta and phi by the inverse of (3-26).
+// Throws std::invalid_argument as corrugated_element, or for theta outside [0, pi].
+CorrugatedElementState corrugated_element3_at_theta(const CorrugatedElementParams& params, double theta);
+
 // (3-26): theta = 2 arctan(tan(phi/2) cos((beta + alpha)/2) / cos((beta - alpha)/2)).
 double element3_theta(const CorrugatedElementParams& params, double phi);
 
