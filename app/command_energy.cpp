@@ -1,5 +1,11 @@
 // rigidfold energy PATTERN --rest REST.json|REST.fold [--k-m K] [--k-v K] [--k-u K | --stiffness SPEC.json]
-//                  [--starts N] [--seed S] [--json]
+//                  [--starts N] [--seed S] [--barriers] [--json]
+// --barriers: the barrier both ways between every pair of stable states (adjacent pairs in
+// energy when there are more than 6 states): a string method with a climbing image on the
+// closure manifold, refined by Newton to an index-1 saddle and checked
+// (kernel/energy/minimum_energy_path.hpp); a pair whose saddle fails a check says "not found"
+// and why. Off by default: one string search per pair (the bundled 8-crease waterbomb base,
+// two states, one pair: tens of milliseconds in Release).
 // --load SPEC.json: the vertex held at a height above the plane of its supports
 // (kernel/energy/load_spec.hpp, vertex_height_control.hpp): the loaded equilibria reached from
 // the rest state and from every stable state, each converged (KKT residual <= 1e-12) before
@@ -42,6 +48,7 @@ void add_energy_command(CLI::App& app) {
     int starts = 24;
     std::uint64_t seed = 1;
     bool json = false;
+    bool barriers = false;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("pattern", a->pattern, "crease pattern (.fold, or .svg in Origami Simulator's colours)")->required();
@@ -56,6 +63,9 @@ void add_energy_command(CLI::App& app) {
   cmd->add_option("--starts", a->starts, "random starts besides the rest state (0..1000, default 24)");
   cmd->add_option("--seed", a->seed, "seed of the random starts (default 1)");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
+  cmd->add_flag("--barriers", a->barriers,
+                "the energy barrier both ways between the stable states (minimum-energy path on the closure manifold, "
+                "saddle refined and checked); one path search per pair");
   auto* load_opt = cmd->add_option("--load", a->load,
                                    "vertex height control: JSON {vertex, height, supports (default: its valley creases)}; "
                                    "prints the loaded equilibria and their reaction forces");
@@ -71,6 +81,7 @@ void add_energy_command(CLI::App& app) {
     problem.search.random_starts = a->starts;
     problem.search.seed = a->seed;
     problem.rest_place = a->rest;
+    problem.barriers = a->barriers;
     CreaseSpringStates found;
     if (spec->count() > 0) problem.edge_stiffness = read_stiffness_spec(a->stiffness, p);  // names the file and the JSON path
     if (load_opt->count() > 0) problem.load = read_load_spec(a->load, p, t);                // the same
@@ -148,6 +159,34 @@ void add_energy_command(CLI::App& app) {
           ++shown;
         }
       std::cout << (shown == 16 ? " ... (use --json)" : "") << "\n";
+    }
+    for (const StateBarrier& b : found.barriers) {
+      const MinimumEnergyPath& m = b.path;
+      if (m.found) {
+        if (m.top == PathTop::kSaddle)
+          std::snprintf(line, sizeof line,
+                        "  barrier state %d <-> state %d: %.12g from state %d, %.12g from state %d (index-1 saddle, energy %.12g, "
+                        "reduced gradient %.1e, closure %.1e rad)\n",
+                        b.first + 1, b.second + 1, m.barrier_from_a, b.first + 1, m.barrier_from_b, b.second + 1, m.saddle.energy,
+                        m.saddle.stationarity_residual, m.saddle.closure_residual);
+        else
+          std::snprintf(line, sizeof line,
+                        "  barrier state %d <-> state %d: %.12g from state %d, %.12g from state %d (top at the flat state, a "
+                        "singular point where the energy has a cusp: energy %.12g)\n",
+                        b.first + 1, b.second + 1, m.barrier_from_a, b.first + 1, m.barrier_from_b, b.second + 1, m.saddle.energy);
+        std::cout << line;
+        std::cout << "    top fold angles (deg):";
+        int shown = 0;
+        for (int e = 0; e < p.num_edges() && shown < 16; ++e)
+          if (t.edge_is_hinge[e]) {
+            std::snprintf(line, sizeof line, " %d:%.9g", e, to_degrees(m.saddle.edge_angles[e]));
+            std::cout << line;
+            ++shown;
+          }
+        std::cout << (shown == 16 ? " ... (use --json)" : "") << "\n";
+      } else {
+        std::cout << "  barrier state " << b.first + 1 << " <-> state " << b.second + 1 << ": not found (" << m.message << ")\n";
+      }
     }
     if (!loaded.is_null()) {
       std::snprintf(line, sizeof line, "  loaded: vertex %d held at height %.12g above its %zu supports\n", loaded["vertex"].get<int>(),

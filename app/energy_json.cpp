@@ -45,6 +45,48 @@ nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, c
     list.push_back(sj);
   }
   j["stable_states"] = list;
+  if (problem.barriers) {
+    auto angles_deg = [&](const Eigen::VectorXd& rho) {
+      Json a = Json::array();
+      for (int e = 0; e < pattern.num_edges(); ++e) a.push_back(topology.edge_is_hinge[e] ? Json(to_degrees(rho[e])) : Json(nullptr));
+      return a;
+    };
+    Json barriers = Json::array();
+    for (const StateBarrier& b : states.barriers) {
+      const MinimumEnergyPath& m = b.path;
+      Json bj;
+      bj["states"] = {b.first, b.second};
+      bj["found"] = m.found;
+      bj["top"] = to_string(m.top);
+      bj["message"] = m.message;
+      bj["barrier_from_first"] = m.found ? Json(m.barrier_from_a) : Json(nullptr);
+      bj["barrier_from_second"] = m.found ? Json(m.barrier_from_b) : Json(nullptr);
+      Json saddle;
+      if (m.saddle.x.size() != 0) {
+        saddle["energy"] = m.saddle.energy;
+        saddle["converged"] = m.saddle.converged;
+        saddle["closure_residual_rad"] = m.saddle.closure_residual;
+        saddle["stationarity_residual"] = m.saddle.stationarity_residual;
+        saddle["negative_eigenvalues"] = m.negative_eigenvalues;
+        Json ev = Json::array();
+        for (Eigen::Index i = 0; i < m.saddle.reduced_hessian_eigenvalues.size(); ++i) ev.push_back(m.saddle.reduced_hessian_eigenvalues[i]);
+        saddle["reduced_hessian_eigenvalues"] = ev;
+        saddle["connects_the_states"] = m.connects;
+        saddle["fold_angles_deg"] = angles_deg(m.saddle.edge_angles);
+      }
+      bj["saddle"] = saddle.is_null() ? Json(nullptr) : saddle;
+      bj["string_converged"] = m.string_converged;
+      bj["string_iterations"] = m.string_iterations;
+      bj["string_force"] = m.string_force;
+      bj["newton_iterations"] = m.newton_iterations;
+      bj["climbing_image"] = m.climbing_image;
+      Json path = Json::array();
+      for (const PathImage& im : m.images) path.push_back({{"energy", im.energy}, {"fold_angles_deg", angles_deg(im.edge_angles)}});
+      bj["path"] = path;
+      barriers.push_back(bj);
+    }
+    j["barriers"] = barriers;
+  }
   return j;
 }
 

@@ -56,6 +56,17 @@ CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topo
   if (out.search.states.empty())
     throw NoAnswerError("no stable state reached from " + std::to_string(out.search.starts) + " starts (" +
                         std::to_string(out.search.starts_converged) + " minimisations converged)");
+  if (problem.barriers) {
+    const int count = static_cast<int>(out.search.states.size());
+    for (int i = 0; i < count; ++i)
+      for (int j = i + 1; j < count; ++j) {
+        if (count > kMaxAllPairsBarrierStates && j != i + 1) continue;
+        StateBarrier barrier{i, j, {}};
+        barrier.path = minimum_energy_path(system, topology, springs, out.search.states[i].state.x,
+                                           out.search.states[j].state.x, problem.path);
+        out.barriers.push_back(std::move(barrier));
+      }
+  }
   if (problem.load) {
     std::vector<Eigen::VectorXd> starts{system.unknowns_from_edges(problem.rest)};
     for (const auto& f : out.search.states) starts.push_back(system.unknowns_from_edges(f.state.edge_angles));

@@ -2,7 +2,9 @@
 // The stable states of a crease pattern with torsional springs at its creases: the one kernel
 // entry behind `rigidfold energy` and the Python rigidfold.stable_states (issue 14 item 2).
 // It checks the problem (size, stiffnesses, rest state), then runs the multistart search of
-// stable_state_search.hpp on the loop-closure manifold with no symmetry imposed.
+// stable_state_search.hpp on the loop-closure manifold with no symmetry imposed. With
+// CreaseSpringProblem::barriers it also runs minimum_energy_path.hpp between pairs of the
+// states found (each barrier reported only when its saddle passed its checks).
 //
 // Units: radians; stiffness in energy per rad^2; energy in the stiffness unit times rad^2.
 #include <Eigen/Core>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "kernel/energy/crease_stiffness.hpp"
+#include "kernel/energy/minimum_energy_path.hpp"
 #include "kernel/energy/stable_state_search.hpp"
 #include "kernel/energy/vertex_height_control.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
@@ -26,6 +29,9 @@ inline constexpr int kMaxSpringStateFreeCreases = 400;
 inline constexpr double kRestClosureTolerance = 1e-6;
 // Random starts the search takes at most (besides the rest state).
 inline constexpr int kMaxSpringStateStarts = 1000;
+// Barriers: every pair of stable states when there are at most this many states; otherwise
+// only the pairs adjacent in energy (state i and i + 1 of the list).
+inline constexpr int kMaxAllPairsBarrierStates = 6;
 
 struct CreaseSpringProblem {
   StiffnessByAssignment stiffness;   // per letter, >= 0
@@ -38,6 +44,16 @@ struct CreaseSpringProblem {
   // A vertex held at a height (load_spec.hpp): its loaded equilibria are reached from the rest
   // state and from each stable state, with the same springs.
   std::optional<VertexHeightLoad> load;
+  // Barriers between the stable states (minimum_energy_path.hpp), pairs as
+  // kMaxAllPairsBarrierStates says. Off by default: one string search per pair.
+  bool barriers = false;
+  MinimumEnergyPathOptions path;
+};
+
+// The barrier between two stable states (indices into CreaseSpringStates::search.states).
+struct StateBarrier {
+  int first = 0, second = 0;  // first < second
+  MinimumEnergyPath path;     // path.found: every check passed; else path.message says why
 };
 
 struct CreaseSpringStates {
@@ -46,6 +62,8 @@ struct CreaseSpringStates {
   // With a load: the distinct converged loaded equilibria (edge angles apart by more than
   // 1e-6 rad), in increasing energy.
   std::vector<HeightControlledEquilibrium> loaded;
+  // With barriers: one entry per pair searched, in order (0,1), (0,2), ..., (1,2), ...
+  std::vector<StateBarrier> barriers;
 };
 
 // Throws InputError naming the place: "pattern" (more than kMaxSpringStateFreeCreases free

@@ -133,9 +133,11 @@ const char* to_string(PathTop top) {
   return "none";
 }
 
-MinimumEnergyPath minimum_energy_path(const ClosureSystem& system, const Topology& topology, const CreaseSprings& springs,
-                                      const Eigen::VectorXd& x_a, const Eigen::VectorXd& x_b,
-                                      const MinimumEnergyPathOptions& options) {
+namespace {
+
+MinimumEnergyPath path_from_start(const ClosureSystem& system, const Topology& topology, const CreaseSprings& springs,
+                                  const Eigen::VectorXd& x_a, const Eigen::VectorXd& x_b,
+                                  const MinimumEnergyPathOptions& options, bool via_flat) {
   const int n = system.num_unknowns();
   if (x_a.size() != n || x_b.size() != n) throw std::invalid_argument("minimum_energy_path: x_a and x_b need num_unknowns() entries");
   if (springs.stiffness.size() != system.num_edges() || springs.rest_angles.size() != system.num_edges())
@@ -188,6 +190,7 @@ MinimumEnergyPath minimum_energy_path(const ClosureSystem& system, const Topolog
   for (int i = 0; i <= M; ++i) {
     const double u = double(i) / M;
     Eigen::VectorXd x = i == 0 ? a : i == M ? b : Eigen::VectorXd((1.0 - u) * a + u * b);
+    if (via_flat && i > 0 && i < M) x = u <= 0.5 ? Eigen::VectorXd((1.0 - 2.0 * u) * a) : Eigen::VectorXd((2.0 * u - 1.0) * b);
     if (i > 0 && i < M)
       for (int k = 0; k < n; ++k) x[k] += options.initial_perturbation * std::sin(M_PI * u) * (2.0 * rng.uniform() - 1.0);
     if (!problem.project(x)) {
@@ -244,22 +247,38 @@ MinimumEnergyPath minimum_energy_path(const ClosureSystem& system, const Topolog
           return "";
         }
       }
-      if (climbing < 0 && perpendicular <= options.climb_tolerance * kmax) {
-        climbing = 1;
-        for (int i = 2; i < M; ++i)
-          if (images[i].energy > images[climbing].energy) climbing = i;
-        continue;  // recompute the forces with the climbing image's
+      // Climb once the string is near a path; also when its force has stopped halving.
+      const bool stalled = it - best_at >= options.stall_iterations;
+      if (climbing < 0) {
+        if (perpendicular < 0.5 * best) {
+          best = perpendicular;
+          best_at = it;
+        }
+        if (perpendicular <= options.climb_tolerance * kmax || stalled) {
+          climbing = 1;
+          for (int i = 2; i < M; ++i)
+            if (images[i].energy > images[climbing].energy) climbing = i;
+          best = std::numeric_limits<double>::infinity();
+          best_at = it;
+          continue;  // recompute the forces with the climbing image's
+        }
       }
       for (int i = 1; i < M; ++i) {
         if (pinned && i == climbing) continue;
         Eigen::VectorXd step = dt * force[i];
         const double size = step.lpNorm<Eigen::Infinity>();
         if (size > options.max_image_step) step *= options.max_image_step / size;
-        Eigen::VectorXd x = images[i].x + step;
-        if (!problem.project(x) || x.lpNorm<Eigen::Infinity>() > M_PI)
-          return "a string image could not be projected onto the manifold or left the fold range +-pi (iteration " +
-                 std::to_string(it) + ")";
-        images[i] = {x, problem.energy(x)};
+        // Near a singular point the corrector may throw an image far from where it was sent
+        // (onto another sheet of the manifold): halve the step until it lands near its target;
+        // an image that cannot move stays.
+        for (int tries = 0; tries < 6; ++tries, step *= 0.5) {
+          Eigen::VectorXd x = images[i].x + step;
+          const Eigen::VectorXd target = x;
+          if (!problem.project(x) || x.lpNorm<Eigen::Infinity>() > M_PI) continue;
+          if ((x - target).lpNorm<Eigen::Infinity>() > std::max(options.max_image_step, 2.0 * step.lpNorm<Eigen::Infinity>())) continue;
+          images[i] = {x, problem.energy(x)};
+          break;
+        }
       }
       const bool ok = climbing < 0 ? redistribute(problem, images, 0, M)
                                    : redistribute(problem, images, 0, climbing) && redistribute(problem, images, climbing, M);
@@ -400,6 +419,25 @@ MinimumEnergyPath minimum_energy_path(const ClosureSystem& system, const Topolog
   out.barrier_from_a = out.saddle.energy - out.energy_a;
   out.barrier_from_b = out.saddle.energy - out.energy_b;
   return out;
+}
+
+}  // namespace
+
+MinimumEnergyPath minimum_energy_path(const ClosureSystem& system, const Topology& topology, const CreaseSprings& springs,
+                                      const Eigen::VectorXd& x_a, const Eigen::VectorXd& x_b,
+                                      const MinimumEnergyPathOptions& options) {
+  MinimumEnergyPath straight = path_from_start(system, topology, springs, x_a, x_b, options, false);
+  straight.start = "straight";
+  // The second start, through the flat state, only where the flat state closes.
+  const Eigen::VectorXd flat = Eigen::VectorXd::Zero(system.num_unknowns());
+  const Eigen::VectorXd r = system.residual(flat);
+  if (r.size() && r.lpNorm<Eigen::Infinity>() > options.equilibrium.closure_tolerance) return straight;
+  MinimumEnergyPath through = path_from_start(system, topology, springs, x_a, x_b, options, true);
+  through.start = "through the flat state";
+  if (straight.found && (!through.found || straight.saddle.energy <= through.saddle.energy)) return straight;
+  if (through.found) return through;
+  straight.message = "straight start: " + straight.message + "; start through the flat state: " + through.message;
+  return straight;
 }
 
 }  // namespace rigidfold

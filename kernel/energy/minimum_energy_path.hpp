@@ -10,7 +10,10 @@
 //      manifold's tangent space (the null space N of J = dr/dx, as in
 //      constrained_equilibrium.hpp), f = -N N^T g, then put back on the manifold by the
 //      corrector (newton_project, 1e-12 rad). The string starts as the straight segment from
-//      x_a to x_b, its interior images moved by a small pseudo-random offset (seeded, the same
+//      x_a to x_b and, where the flat state (free fold angles 0) closes, a second time as the
+//      two segments x_a -> flat -> x_b (a start far off the manifold can be thrown onto another
+//      of its sheets by the corrector); the found path with the lower top is returned. Its
+//      interior images moved by a small pseudo-random offset (seeded, the same
 //      on every platform) and projected: a symmetric pattern between symmetric states would
 //      otherwise keep a symmetric string forever, even where its top is a cusp (the flat
 //      state of a waterbomb) that an unsymmetric path avoids. After each step the images are redistributed at equal arc
@@ -47,10 +50,11 @@
 //   edge); x_a, x_b: free fold angles (radians, system order) of two stable states (on the
 //   manifold; each is projected first).
 // Outputs: MinimumEnergyPath below. Units: radians; energy in the stiffness unit times rad^2.
-// Cost: per string iteration, one dense SVD of J and two Newton projections per image
-//   (O(images * rows * unknowns^2)); the string takes up to max_iterations iterations. Meant
-//   for the patterns the stable-state search takes (kMaxSpringStateFreeCreases); on the
-//   8-crease waterbomb base a path takes a few tens of milliseconds.
+// Cost: per string iteration, one dense SVD of J and up to two Newton projections per image
+//   (O(images * rows * unknowns^2)); the string stops after max_iterations iterations, or
+//   earlier when its force has not halved for stall_iterations; two starts where flat closes.
+//   Meant for the patterns the stable-state search takes (kMaxSpringStateFreeCreases); on the
+//   8-crease waterbomb base one pair takes ~0.1-0.3 s in Release.
 // Limits: a search, not a proof. The string finds A minimum-energy path (the one the
 //   straight start leads to), not necessarily the lowest of all; a path whose top is a
 //   singular point of the manifold (e.g. the flat state of a flat-foldable vertex, where the
@@ -114,6 +118,7 @@ struct MinimumEnergyPath {
   bool found = false;          // every check of the header passed (for `top`)
   PathTop top = PathTop::kNone;
   std::string message;         // why not found ("" when found)
+  std::string start;           // "straight" or "through the flat state": the start of the path returned
   bool string_converged = false;
   int string_iterations = 0;
   double string_force = 0.0;   // the largest image force at the end (energy / rad)
