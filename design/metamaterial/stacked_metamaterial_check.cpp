@@ -51,13 +51,18 @@ Layer trace_layer(const generators::StackedMetamaterialParams& params, bool reve
   out.sheet = generators::stacked_layer_sheet(params, reversed);
   out.topology = build_topology(out.sheet.pattern);
   const ClosureSystem sys(out.sheet.pattern, out.topology);
-  const std::vector<double> start = generators::stacked_layer_fold_angles(params, reversed, kPi - 0.1 * kPi / 180);
-  const Eigen::VectorXd x0 = sys.unknowns_from_edges(Eigen::Map<const Eigen::VectorXd>(start.data(), start.size()));
   const int kd = sys.unknown_of_edge(out.sheet.phi_edge);
   const double sign = out.sheet.pattern.assignments[out.sheet.phi_edge] == Assignment::Valley ? 1.0 : -1.0;
   const double to = options.to_deg * kPi / 180;
-  if (!(std::fabs(x0[kd]) < to / options.steps))
-    throw NoAnswerError("stacked metamaterial: the analytic start is past the first step");
+  // Start below half the first step of the drive (the drive moves up to 1/|k| times faster
+  // than the parameter for metamaterial 4).
+  Eigen::VectorXd x0;
+  for (double delta = 0.1 * kPi / 180;; delta /= 10) {
+    const std::vector<double> start = generators::stacked_layer_fold_angles(params, reversed, kPi - delta);
+    x0 = sys.unknowns_from_edges(Eigen::Map<const Eigen::VectorXd>(start.data(), start.size()));
+    if (std::fabs(x0[kd]) < 0.5 * to / options.steps) break;
+    if (delta < 1e-9) throw NoAnswerError("stacked metamaterial: no analytic start before the first step");
+  }
   ContinuationOptions co;
   co.max_angle_step = 0.2;
   co.landing_unknown = kd;
@@ -136,10 +141,10 @@ double rel(double traced, double closed) { return std::fabs(traced - closed) / s
 StackedMetamaterialCheck stacked_metamaterial_check(const generators::StackedMetamaterialParams& params,
                                                     const StackedMetamaterialOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  if (options.layers < 2 || options.layers > 64)
-    throw InputError("layers", "must be between 2 and 64, got " + std::to_string(options.layers));
-  if (options.steps < 8 || options.steps > 400)
-    throw InputError("steps", "must be between 8 and 400, got " + std::to_string(options.steps));
+  if (options.layers < 2 || options.layers > 16)
+    throw InputError("layers", "must be between 2 and 16, got " + std::to_string(options.layers));
+  if (options.steps < 8 || options.steps > 200)
+    throw InputError("steps", "must be between 8 and 200, got " + std::to_string(options.steps));
   if (!(std::isfinite(options.to_deg) && options.to_deg > 10 && options.to_deg < 175))
     throw InputError("to_deg", "must lie strictly between 10 and 175 degrees");
   const Layer base = trace_layer(params, false, options);   // validates params (generator)
