@@ -51,7 +51,11 @@ struct StackedLayerSheet {
   int ni = 0, nj = 0;               // panels along i (W) and j (L)
   bool levels_along_j = true;       // metamaterials 1-3; 4: levels along i
   std::vector<int> levels;          // level of each node row j (1-3) or column i (4)
-  int phi_edge = -1;                // the seed's A2B2: its dihedral is the input phi
+  // The seed's A2B2, whose dihedral is the input phi: j-edge (1, 0) for 1-3 (sectors pi - beta
+  // and alpha beside it, as (3-24)); for 4 the j-edge (2, 0) of the peak column (our choice,
+  // the figure is lost: the only j-creases tied to theta by the cos form of (3-26) - inverted,
+  // tan(phi/2) = |k| tan(theta/2), see stacked_metamaterial_check.hpp).
+  int phi_edge = -1;
   int theta_edge = -1;              // metamaterial 4: the seed's B4B5 (dihedral theta); else -1
   std::vector<int> bonding_vertices;  // nodes on the top level
   // The layer's closed-form dimensions: (cells_W W_e, cells_L L_e, H_e) of element e
