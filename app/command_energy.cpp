@@ -4,8 +4,11 @@
 // energy when there are more than 6 states): a string method with a climbing image on the
 // closure manifold, refined by Newton to an index-1 saddle and checked
 // (kernel/energy/minimum_energy_path.hpp); a pair whose saddle fails a check says "not found"
-// and why. Off by default: one string search per pair (the bundled 8-crease waterbomb base,
-// two states, one pair: tens of milliseconds in Release).
+// and why. Off by default: one string search (two starts) per pair. Measured in Release on the
+// bundled 8-crease waterbomb base with its rest60 state: --starts 2 (2 states, 1 pair) 0.08 s
+// against 0.01 s without; the default 24 starts (5 states, 10 pairs, most of them "not found":
+// their saddles lead to a third state) 1.7 s. Worst case per pair: 2 starts x (max_iterations
+// = 3000 string iterations x 15 interior images) when the string neither converges nor stalls.
 // --load SPEC.json: the vertex held at a height above the plane of its supports
 // (kernel/energy/load_spec.hpp, vertex_height_control.hpp): the loaded equilibria reached from
 // the rest state and from every stable state, each converged (KKT residual <= 1e-12) before
