@@ -11,7 +11,12 @@
 #include <limits>
 #include <string>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+
 #include "design/waterbomb/waterbomb_bistability.hpp"
+#include "design/waterbomb/waterbomb_kinematics.hpp"
+#include "kernel/closure/closure_second_order.hpp"
 #include "kernel/analysis/trace_motion.hpp"
 #include "kernel/solve/newton_projection.hpp"
 #include "tests/closure/closure_test_utils.hpp"
@@ -114,6 +119,54 @@ TEST(MinimumEnergyPath, WaterbombBaseTopIsTheFlatCuspAtTheSymmetricBarrier) {
   EXPECT_THROW(minimum_energy_path(sys, topo, make_crease_springs(p, Eigen::VectorXd::Ones(p.num_edges()), Eigen::VectorXd::Zero(p.num_edges())),
                                    Eigen::VectorXd::Zero(sys.num_unknowns()), Eigen::VectorXd::Zero(sys.num_unknowns()), bad),
                std::invalid_argument);
+}
+
+// Why the waterbomb path tops at the flat state: there the closure manifold is a cone. On the
+// first-order tangent space L = null J(0) (dimension 2n - 2 = 6) the second-order closure
+// condition is one quadratic form Q (the normal component of D^2 r[d, d]; the in-plane ones
+// vanish), of signature (1, 5) or (5, 1): a cone with two nappes that meet only at flat. The
+// tangent rays of the symmetric path into the two states (one-sided derivatives of the closed
+// form at theta = 90 deg, by differences of 1e-5 rad) are null for Q and lie on opposite
+// nappes (B(d1, d2) has the sign opposite to Q's lone eigenvalue), so near flat every path
+// between the states passes through flat.
+TEST(MinimumEnergyPath, WaterbombStatesLeaveFlatOnOppositeNappesOfTheTangentCone) {
+  const CreasePattern p = read_fold(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold");
+  const Topology topo = build_topology(p);
+  const ClosureSystem sys(p, topo);
+  const int n = sys.num_unknowns();
+  const Eigen::VectorXd flat = Eigen::VectorXd::Zero(n);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense_jacobian(sys, flat), Eigen::ComputeFullV);
+  const int rank = static_cast<int>(svd.setThreshold(1e-9).rank());
+  ASSERT_EQ(rank, 2);
+  const Eigen::MatrixXd L = svd.matrixV().rightCols(n - rank);
+  // Q(d): the normal row of D^2 r[d, d]; B by polarisation.
+  auto second = [&](const Eigen::VectorXd& d) { return closure_second_derivative(sys, topo, flat, d); };
+  auto B = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) { return 0.25 * (second(u + v)[2] - second(u - v)[2]); };
+  Eigen::MatrixXd Q(L.cols(), L.cols());
+  for (int i = 0; i < L.cols(); ++i) {
+    EXPECT_LE(second(L.col(i)).head<2>().lpNorm<Eigen::Infinity>(), 1e-12);
+    for (int j = 0; j < L.cols(); ++j) Q(i, j) = B(L.col(i), L.col(j));
+  }
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (Q + Q.transpose())).eigenvalues();
+  int positive = 0, negative = 0;
+  for (Eigen::Index i = 0; i < ev.size(); ++i) {
+    if (ev[i] > 1e-9) ++positive;
+    if (ev[i] < -1e-9) ++negative;
+  }
+  ASSERT_EQ(positive + negative, 6);
+  ASSERT_TRUE((positive == 1) != (negative == 1)) << positive << " positive, " << negative << " negative";
+  const double lone = positive == 1 ? 1.0 : -1.0;  // the sign of the cone's axis
+  const double h = 1e-5;
+  auto ray = [&](double side) {
+    const Eigen::VectorXd e = waterbomb::waterbomb_edge_angles(p, waterbomb::waterbomb_fold_angles(4, 0.5 * M_PI + side * h));
+    return Eigen::VectorXd(sys.unknowns_from_edges(e) / h);
+  };
+  const Eigen::VectorXd d1 = ray(-1.0), d2 = ray(+1.0);  // towards state 1 (theta < 90) and state 2
+  for (const Eigen::VectorXd* d : {&d1, &d2}) {
+    EXPECT_LE((dense_jacobian(sys, flat) * *d).lpNorm<Eigen::Infinity>(), 1e-9);  // in L
+    EXPECT_LE(std::fabs(B(*d, *d)), 1e-4 * d->squaredNorm());                     // null for Q
+  }
+  EXPECT_LT(lone * B(d1, d2), -0.1 * d1.norm() * d2.norm());  // opposite nappes
 }
 
 // A 1-DOF manifold: a flat-foldable degree-4 vertex (sectors 70, 80, 110, 100 deg), letters
