@@ -45,7 +45,7 @@ TEST(MinimumEnergyPath, WaterbombBaseTopIsTheFlatCuspAtTheSymmetricBarrier) {
   const CreasePattern p = read_fold(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold");
   const Topology topo = build_topology(p);
   const ClosureSystem sys(p, topo);
-  for (double k_m : {1.0, 2.0}) {
+  for (double k_m : {2.0}) {  // unequal springs; the CLI test covers k_m = k_v = 1
     const auto design = waterbomb::waterbomb_bistability(4, to_radians(60.0), k_m, 1.0);
     const auto want = design.stable_states();
     ASSERT_EQ(want.size(), 2u);
@@ -105,7 +105,6 @@ TEST(MinimumEnergyPath, WaterbombBaseTopIsTheFlatCuspAtTheSymmetricBarrier) {
 
     // Without the singular-top step (radius 0) the same path has no top that passes a check:
     // no barrier is reported, and the message says why.
-    if (k_m != 1.0) continue;
     MinimumEnergyPathOptions strict;
     strict.singular_top_radius = 0.0;
     const MinimumEnergyPath none = minimum_energy_path(sys, topo, springs, states[0].x, states[1].x, strict);
