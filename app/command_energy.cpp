@@ -188,7 +188,13 @@ void add_energy_command(CLI::App& app) {
           }
         std::cout << (shown == 16 ? " ... (use --json)" : "") << "\n";
       } else {
-        std::cout << "  barrier state " << b.first + 1 << " <-> state " << b.second + 1 << ": not found (" << m.message << ")\n";
+        std::cout << "  barrier state " << b.first + 1 << " <-> state " << b.second + 1 << ": not found (" << m.message << ")";
+        if (b.saddle_joins[0] >= 0) {
+          std::snprintf(line, sizeof line, "; its index-1 saddle (energy %.12g) joins state %d and state %d", m.saddle.energy,
+                        b.saddle_joins[0] + 1, b.saddle_joins[1] + 1);
+          std::cout << line;
+        }
+        std::cout << "\n";
       }
     }
     if (!loaded.is_null()) {

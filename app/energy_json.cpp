@@ -61,6 +61,7 @@ nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, c
       bj["message"] = m.message;
       bj["barrier_from_first"] = m.found ? Json(m.barrier_from_a) : Json(nullptr);
       bj["barrier_from_second"] = m.found ? Json(m.barrier_from_b) : Json(nullptr);
+      bj["saddle_joins_states"] = b.saddle_joins[0] >= 0 ? Json({b.saddle_joins[0], b.saddle_joins[1]}) : Json(nullptr);
       Json saddle;
       if (m.saddle.x.size() != 0) {
         saddle["energy"] = m.saddle.energy;

@@ -13,7 +13,8 @@
 // barriers [{states [i, j] (indices into stable_states), found, top ("index-1 saddle",
 // "singular point (flat state, cusp)" or "none"), message ("" when found),
 // barrier_from_first, barrier_from_second (saddle energy minus the state's; null unless
-// found), saddle (null when the refinement did not run) {energy, converged,
+// found), saddle_joins_states (not found, but its index-1 saddle descends to these two
+// listed states instead: [k, l]; else null), saddle (null when the refinement did not run) {energy, converged,
 // closure_residual_rad, stationarity_residual, negative_eigenvalues,
 // reduced_hessian_eigenvalues, connects_the_states, fold_angles_deg}, string_converged,
 // string_iterations, string_force, newton_iterations, climbing_image, path [{energy,

@@ -64,6 +64,18 @@ CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topo
         StateBarrier barrier{i, j, {}};
         barrier.path = minimum_energy_path(system, topology, springs, out.search.states[i].state.x,
                                            out.search.states[j].state.x, problem.path);
+        if (!barrier.path.found && barrier.path.descent_ends.size() == 2) {
+          int ends[2] = {-1, -1};
+          for (int s = 0; s < 2; ++s)
+            for (int k = 0; k < count && ends[s] < 0; ++k)
+              if ((out.search.states[k].state.edge_angles - barrier.path.descent_ends[s]).lpNorm<Eigen::Infinity>() <=
+                  problem.path.same_state_tolerance)
+                ends[s] = k;
+          if (ends[0] >= 0 && ends[1] >= 0 && ends[0] != ends[1]) {
+            barrier.saddle_joins[0] = std::min(ends[0], ends[1]);
+            barrier.saddle_joins[1] = std::max(ends[0], ends[1]);
+          }
+        }
         out.barriers.push_back(std::move(barrier));
       }
   }

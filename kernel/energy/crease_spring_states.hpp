@@ -54,6 +54,10 @@ struct CreaseSpringProblem {
 struct StateBarrier {
   int first = 0, second = 0;  // first < second
   MinimumEnergyPath path;     // path.found: every check passed; else path.message says why
+  // When not found but the path's index-1 saddle descends to two states of the list on both
+  // sides (another pair): their indices, increasing; else {-1, -1}. A hint, not a barrier of
+  // (first, second).
+  int saddle_joins[2] = {-1, -1};
 };
 
 struct CreaseSpringStates {

@@ -352,9 +352,11 @@ MinimumEnergyPath path_from_start(const ClosureSystem& system, const Topology& t
     v /= v.lpNorm<Eigen::Infinity>();
     const Eigen::VectorXd ea = system.edges_from_unknowns(a), eb = system.edges_from_unknowns(b);
     int reached_a = 0, reached_b = 0;
+    out.descent_ends.clear();
     for (double sign : {1.0, -1.0}) {
       const Equilibrium d = find_equilibrium(system, topology, springs, x + sign * options.descent_offset * v, options.equilibrium);
-      if (!d.converged) continue;
+      if (!d.converged || !d.stable) continue;
+      out.descent_ends.push_back(d.edge_angles);
       if ((d.edge_angles - ea).lpNorm<Eigen::Infinity>() <= options.same_state_tolerance) ++reached_a;
       else if ((d.edge_angles - eb).lpNorm<Eigen::Infinity>() <= options.same_state_tolerance) ++reached_b;
     }

@@ -131,6 +131,9 @@ struct MinimumEnergyPath {
   Equilibrium saddle;
   int negative_eigenvalues = -1;  // of the reduced Hessian at the saddle, below -threshold
   bool connects = false;       // the two descents reach x_a and x_b
+  // The stable states (edge angles) the descents from an index-1 saddle reached, converged
+  // ones only (0-2 entries): where a saddle that fails `connects` leads instead.
+  std::vector<Eigen::VectorXd> descent_ends;
   double energy_a = 0.0, energy_b = 0.0;
   double barrier_from_a = 0.0;  // E_saddle - E_a (NaN unless found)
   double barrier_from_b = 0.0;  // E_saddle - E_b (NaN unless found)
