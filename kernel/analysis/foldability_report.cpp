@@ -273,7 +273,8 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
 // Kawasaki nor the numerical search. False (r untouched) where no face's cycle is proven.
 bool first_order_loop_gain_report(const CreasePattern& p, const Topology& t, const FoldabilityOptions& o,
                                   FoldabilityReport& r) {
-  if (!o.use_assignment || t.interior_vertices.empty()) return false;
+  // --general asks for the numerical solver itself (cross-checks).
+  if (!o.use_assignment || o.force_general || t.interior_vertices.empty()) return false;
   for (const Eigen::Vector3d& v : p.vertices)
     if (v.z() != 0.0) return false;  // a folded form: the flat state is not what the file gives
   const VertexBoxes boxes = vertex_boxes(p, o.coordinate_tolerance);

@@ -63,12 +63,18 @@ TEST(CheckCli, SquareTwistTypesFollowSeed001) {
 }
 
 TEST(CheckCli, OutsideTheMultiplierModelTheGeneralSolverAnswersAndSaysHowSure) {
-  // A perturbed Miura is not flat-foldable: the general solver finds no folded point near
-  // flat, reports the least residual, and flags the "no" as numerical evidence.
+  // A perturbed Miura is not flat-foldable. Its faces' cycles of degree-4 vertices have
+  // first-order loop gains away from 1: a proof (interval_loop_gain.hpp). Forced onto the
+  // general solver (--general), the numerical search finds no folded point near flat,
+  // reports the least residual, and flags its "no" as numerical evidence.
   generators::MiuraParams m;
   m.rows = m.cols = 3;
   m.perturbation = 0.05;
-  const auto j = check(generators::miura_ori(m), "perturbed");
+  const auto proof = check(generators::miura_ori(m), "perturbed");
+  EXPECT_EQ(proof["model"], "first-order loop gain (interval arithmetic)");
+  EXPECT_EQ(proof["rigidly_foldable"], false);
+  EXPECT_EQ(proof["is_proof"], true);
+  const auto j = check(generators::miura_ori(m), "perturbed", "--general");
   EXPECT_EQ(j["model"], "general-loop-closure");
   EXPECT_EQ(j["rigidly_foldable"], false);
   EXPECT_EQ(j["is_proof"], false);
