@@ -1,6 +1,7 @@
 // rigidfold check PATTERN.fold [--ignore-assignment] [--general] [--tolerance auto|exact|U] [--json]
 // Rigid-foldability verdict (kernel/analysis/foldability_report.hpp: check_foldability).
-// Exit 0 whether or not it folds; 2 on bad input.
+// Exit 0 whether or not it folds; 2 on bad input. A thick FOLD (rigidfold thick --out) is
+// answered with the thick model (kernel/thick/thick_check.hpp: DOF at flat, SE(3) trace).
 #include <iostream>
 
 #include "app/terminal_progress.hpp"
@@ -13,6 +14,7 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
+#include "kernel/thick/thick_check.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -65,6 +67,13 @@ void add_check_command(CLI::App& app) {
     const std::optional<double> tolerance = coordinate_tolerance_flag("--tolerance", a->tolerance);
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
+    if (is_thick_fold(p)) {  // `rigidfold thick --out`'s FOLD: the thick model answers (kernel/thick/thick_check.hpp)
+      const ThickCheckReport r = thick_check(p, t);
+      nlohmann::ordered_json j = {{"file", a->pattern}};
+      j.update(thick_check_json(p, r, false));
+      std::cout << (a->json ? document_text(j) + "\n" : a->pattern + ": " + r.verdict + " (model: thick)\n" + thick_check_text(p, r, false));
+      return;
+    }
     FoldabilityOptions options;
     options.use_assignment = !a->ignore;
     options.force_general = a->general;

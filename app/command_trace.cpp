@@ -20,6 +20,10 @@
 //     --drive do not apply.
 //   - applicable but not foldable (for the assignment, or in any mode with
 //     --ignore-assignment): nothing to trace; the obstruction is reported (exit 0).
+//   - a thick FOLD (rigidfold thick --out; extension keys rigidfold:thickness and
+//     rigidfold:hinge_heights): the thick model (kernel/thick/thick_check.hpp), its motion from
+//     the flat state traced with the SE(3) closure of every thick vertex; --drive, --to, --steps
+//     apply; --branch, --out, --csv are refused (exit 2).
 //   Nothing traced while --out or --csv was asked for: exit 3 (no answer within tolerance),
 //   each branch's reason and residual on stderr, no file written.
 // Per step: every fold angle, the largest vertex-closure residual |log R_v| (rad), the
@@ -62,6 +66,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/thick/thick_check.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -254,6 +259,17 @@ void add_trace_command(CLI::App& app) {
     check_steps(a->steps, p);
     if (a->to && (!std::isfinite(*a->to) || std::fabs(*a->to) > 180.0))
       throw InputError("--to", "fold angle must be finite and within [-180, 180] deg");
+    if (is_thick_fold(p)) {  // `rigidfold thick --out`'s FOLD: traced with the thick model (kernel/thick/thick_check.hpp)
+      if (!a->out.empty() || !a->csv.empty()) throw InputError(a->out.empty() ? "--csv" : "--out", "not written for a thick FOLD (its trace is printed; rigidfold thick --stl writes slabs)");
+      if (!a->branch.empty()) throw InputError("--branch", "a thick FOLD has one traced motion (no branches)");
+      ThickCheckRequest tq{a->drive, a->to ? std::optional<double>(to_radians(*a->to)) : std::nullopt, a->steps};
+      tq.drive_place = "--drive", tq.to_place = "--to", tq.steps_place = "--steps";
+      const ThickCheckReport r = thick_check(p, t, tq);
+      Json j = {{"file", a->pattern}};
+      j.update(thick_check_json(p, r, true));
+      std::cout << (a->json ? document_text(j) + "\n" : a->pattern + ": " + r.verdict + " (model: thick)\n" + thick_check_text(p, r, true));
+      return;
+    }
     TraceRequest rq;
     rq.use_assignment = !a->ignore;
     rq.force_general = a->general;

@@ -6,30 +6,62 @@
 
 namespace rigidfold {
 
-std::vector<PanelThicknessClaim> vertex_panel_claims(const ThickVertexModel& model, const Topology& topology, int vertex,
-                                                     double angle_tolerance) {
+namespace {
+
+// Checks the vertex and its degree; returns its name for messages.
+std::string checked_vertex_name(const ThickVertexModel& model, const Topology& topology, int vertex) {
   const std::string name = "vertex " + std::to_string(vertex) + " (" + model.name + ")";
   if (vertex < 0 || vertex >= static_cast<int>(topology.stars.size()) || !topology.stars[vertex].interior())
     throw std::invalid_argument(name + ": not an interior vertex");
   const Fan& fan = topology.stars[vertex].fans[0];
+  if (fan.sectors.size() != model.sectors.size())
+    throw std::invalid_argument(name + ": degree " + std::to_string(fan.sectors.size()) + ", the model has " +
+                                std::to_string(model.sectors.size()));
+  return name;
+}
+
+bool sectors_match(const ThickVertexModel& model, const Fan& fan, int shift, double angle_tolerance) {
   const int n = static_cast<int>(model.sectors.size());
-  if (static_cast<int>(fan.sectors.size()) != n)
-    throw std::invalid_argument(name + ": degree " + std::to_string(fan.sectors.size()) + ", the model has " + std::to_string(n));
+  for (int i = 0; i < n; ++i)
+    if (!(std::abs(fan.sectors[(i + shift) % n] - model.sectors[i]) <= angle_tolerance)) return false;
+  return true;
+}
+
+std::vector<PanelThicknessClaim> claims_at(const ThickVertexModel& model, const Fan& fan, const std::string& name, int shift) {
+  const int n = static_cast<int>(model.sectors.size());
   const ThickLoop& loop = model.thick.loops.at(0);
-  for (int shift = 0; shift < n; ++shift) {
-    bool match = true;
-    for (int i = 0; i < n && match; ++i)
-      match = std::abs(fan.sectors[(i + shift) % n] - model.sectors[i]) <= angle_tolerance;
-    if (!match) continue;
-    std::vector<PanelThicknessClaim> claims;
-    for (int i = 0; i < n; ++i) {
-      const double a = std::abs(loop.joints[i].link.length);
-      if (a == 0.0) continue;  // both hinges on one face: no claim on the thickness
-      claims.push_back(PanelThicknessClaim{name, i, fan.faces[(i + shift) % n], a});
-    }
-    return claims;
+  std::vector<PanelThicknessClaim> claims;
+  for (int i = 0; i < n; ++i) {
+    const double a = std::abs(loop.joints[i].link.length);
+    if (a == 0.0) continue;  // both hinges on one face: no claim on the thickness
+    claims.push_back(PanelThicknessClaim{name, i, fan.faces[(i + shift) % n], a});
   }
+  return claims;
+}
+
+}  // namespace
+
+std::vector<PanelThicknessClaim> vertex_panel_claims(const ThickVertexModel& model, const Topology& topology, int vertex,
+                                                     double angle_tolerance) {
+  const std::string name = checked_vertex_name(model, topology, vertex);
+  const Fan& fan = topology.stars[vertex].fans[0];
+  const int n = static_cast<int>(model.sectors.size());
+  for (int shift = 0; shift < n; ++shift)
+    if (sectors_match(model, fan, shift, angle_tolerance)) return claims_at(model, fan, name, shift);
   throw std::invalid_argument(name + ": its sectors do not match the model's in any cyclic order");
+}
+
+std::vector<PanelThicknessClaim> vertex_panel_claims_at(const ThickVertexModel& model, const Topology& topology, int vertex,
+                                                        int start, double angle_tolerance) {
+  const std::string name = checked_vertex_name(model, topology, vertex);
+  const Fan& fan = topology.stars[vertex].fans[0];
+  const int n = static_cast<int>(model.sectors.size());
+  if (start < 0 || start >= n)
+    throw std::invalid_argument(name + ": fan position " + std::to_string(start) + " out of range (degree " + std::to_string(n) + ")");
+  if (!sectors_match(model, fan, start, angle_tolerance))
+    throw std::invalid_argument(name + ": its sectors do not match the model's with crease 0 at fan position " +
+                                std::to_string(start));
+  return claims_at(model, fan, name, start);
 }
 
 std::vector<double> agreed_panel_thickness(int num_panels, const std::vector<PanelThicknessClaim>& claims,

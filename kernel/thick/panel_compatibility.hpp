@@ -37,6 +37,13 @@ struct PanelThicknessConflict : std::invalid_argument {
 std::vector<PanelThicknessClaim> vertex_panel_claims(const ThickVertexModel& model, const Topology& topology, int vertex,
                                                      double angle_tolerance = 1e-9);
 
+// The same with the placement given: the model's crease 0 on fan position `start` of
+// topology.stars[vertex].fans[0] (for models whose sectors repeat, e.g. the diamond vertex
+// turned by pi). Throws std::invalid_argument naming the vertex if the sectors do not match
+// at that position (or as vertex_panel_claims).
+std::vector<PanelThicknessClaim> vertex_panel_claims_at(const ThickVertexModel& model, const Topology& topology, int vertex,
+                                                        int start, double angle_tolerance = 1e-9);
+
 // Checks every panel's claims against each other: |t1 - t2| <= relative_tolerance * max(t1, t2).
 // Returns the agreed thickness per panel (num_panels entries; 0 where no vertex asks).
 // Throws PanelThicknessConflict for the first disagreement, e.g.
