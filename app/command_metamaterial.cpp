@@ -1,5 +1,7 @@
 // rigidfold metamaterial --unit square-twist|element1|element2|element3 [unit parameters]
 //                        [--samples N] [--json] [--plot DIR] [--cross-check [--cross-check-steps N]]
+// rigidfold metamaterial --stacked 1|2|3|4 [--alpha-deg A] [--beta-deg B] [--l L] [--layers N]
+//                        [--stacked-steps N] [--json]
 // Seed 003's metamaterial units along their motion from flat to the fold limit
 // (design/metamaterial/metamaterial_table.hpp): dimensions, Poisson's ratios, the height
 // maximum and the ratios' sign changes; every sampled row checked before anything is printed.
@@ -7,6 +9,10 @@
 // --cross-check (square twist): the closed forms against the traced tessellation
 // (design/metamaterial/square_twist_cross_check.hpp); its largest differences are reported,
 // and a difference above 1e-9 is "no answer" (exit 3, nothing written or printed).
+// --stacked M: metamaterial M of Fig 3-10 as geometry (design/metamaterial/stacked_metamaterial_check.hpp):
+// both layers traced by the general solver, the stack placed by its bonding vertices; the
+// measured W, L, H and Poisson's ratios against the closed forms (any difference > 1e-9 or a
+// bond gap > 1e-10: exit 3 before anything is printed).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -21,6 +27,7 @@
 #include "app/summary_stream.hpp"
 #include "design/metamaterial/metamaterial_table.hpp"
 #include "design/metamaterial/square_twist_cross_check.hpp"
+#include "design/metamaterial/stacked_metamaterial_check.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/output_set.hpp"
@@ -39,12 +46,13 @@ void add_metamaterial_command(CLI::App& app) {
     std::string plot;
     bool cross_check = false;
     int cross_check_steps = 40;
+    int stacked = 0, layers = 4, stacked_steps = 24;
   };
   auto s = std::make_shared<Args>();
   cmd->add_option("--unit", s->unit,
                   "square-twist (seed 003 3.3.2, T1 tessellation) or element1|element2|element3 (the double-corrugated "
                   "P/Q tessellations' basic elements, 3.2.3, Fig 3-11)")
-      ->required();
+      ;
   auto* alpha = cmd->add_option("--alpha-deg", s->alpha_deg,
                                 "sector alpha, degrees: square twist in (90, 180) (default 150, the seed's 5 pi/6); "
                                 "elements in (0, 180) (default 60; the seed's Fig 3-12 values are lost)");
@@ -62,7 +70,94 @@ void add_metamaterial_command(CLI::App& app) {
                 "(<= 1e-9, else exit 3)");
   auto* ccs = cmd->add_option("--cross-check-steps", s->cross_check_steps,
                               "traced steps of the cross-check, 10..2000 (default 40)");
-  cmd->callback([s, alpha, beta, oa, ob, oc, ol, ccs] {
+  auto* ost = cmd->add_option("--stacked", s->stacked,
+                               "stacked metamaterial 1..4 of Fig 3-10 (layers of double-corrugated sheets, our reconstruction): "
+                               "trace its layers with the general solver and compare the stack with the closed forms (instead of --unit)");
+  auto* olay = cmd->add_option("--layers", s->layers, "--stacked: layers in the stack, 2..16 (default 4)");
+  auto* ostep = cmd->add_option("--stacked-steps", s->stacked_steps, "--stacked: traced steps, 8..200 (default 24)");
+  auto* osam = cmd->get_option("--samples");
+  auto* oplot = cmd->get_option("--plot");
+  auto* occ = cmd->get_option("--cross-check");
+  cmd->callback([s, alpha, beta, oa, ob, oc, ol, ccs, ost, olay, ostep, osam, oplot, occ] {
+    if (ost->count() > 0) {
+      if (!s->unit.empty()) throw InputError("--unit", "give either --unit or --stacked, not both");
+      for (auto* o : {oa, ob, oc, osam, oplot, occ, ccs})
+        if (o->count() > 0) throw InputError(o->get_name(), "does not apply to --stacked");
+      if (s->stacked < 1 || s->stacked > 4) throw InputError("--stacked", "must be 1, 2, 3 or 4, got " + std::to_string(s->stacked));
+      if (s->layers < 2 || s->layers > 16) throw InputError("--layers", "must be between 2 and 16, got " + std::to_string(s->layers));
+      if (s->stacked_steps < 8 || s->stacked_steps > 200)
+        throw InputError("--stacked-steps", "must be between 8 and 200, got " + std::to_string(s->stacked_steps));
+      const double alpha_deg = alpha->count() > 0 ? s->alpha_deg : 60.0;
+      for (const auto& [flag, v] : {std::pair<const char*, double>{"--alpha-deg", alpha_deg}, {"--beta-deg", s->beta_deg}})
+        if (!(std::isfinite(v) && v > 0 && v < 180)) throw InputError(flag, "must lie strictly between 0 and 180 degrees");
+      if (!(std::isfinite(s->l) && s->l > 0)) throw InputError("--l", "must be a finite number > 0");
+      generators::StackedMetamaterialParams gp;
+      gp.metamaterial = s->stacked;
+      gp.alpha = to_radians(alpha_deg);
+      gp.beta = to_radians(s->beta_deg);
+      gp.l = s->l;
+      if (s->stacked == 4 && std::fabs(std::cos((gp.alpha + gp.beta) / 2)) <= 1e-6)
+        throw InputError("--beta-deg", "metamaterial 4 needs alpha + beta != 180 degrees (element 3 is locked there)");
+      metamaterial::StackedMetamaterialOptions so;
+      so.layers = s->layers;
+      so.steps = s->stacked_steps;
+      // Checked inside: NoAnswerError (exit 3) before anything is printed.
+      const metamaterial::StackedMetamaterialCheck c = metamaterial::stacked_metamaterial_check(gp, so);
+      nlohmann::ordered_json j;
+      j["stacked_metamaterial"] = s->stacked;
+      j["parameters"] = {{"alpha_deg", alpha_deg}, {"beta_deg", s->beta_deg}, {"l", s->l}, {"layers", s->layers}, {"steps", s->stacked_steps}};
+      j["input"] = "phi_deg: dihedral of the seed's A2B2 (180 = flat); theta_deg: metamaterial 4's B4B5 (else = phi)";
+      j["creases_per_layer"] = c.creases;
+      j["bonding_vertices_per_bond"] = c.bonding_vertices;
+      j["tolerances"] = {{"closed_form", metamaterial::kStackTolerance}, {"bond", metamaterial::kStackBond},
+                         {"closure_residual", metamaterial::kStackResidual}};
+      j["max_closure_residual"] = c.max_residual;
+      j["max_bond_gap"] = c.max_bond_gap;
+      j["max_dimension_difference"] = c.max_dimension_difference;
+      j["max_ratio_difference"] = c.max_ratio_difference;
+      if (s->stacked == 4) {
+        j["phi_theta_relation"] = {{"inverse_3_26_max_difference_rad", c.max_relation_difference},
+                                   {"printed_3_26_max_difference_rad", c.printed_relation_difference}};
+      }
+      if (c.has_maximum)
+        j["height_maximum"] = {{"phi_II_deg", to_degrees(c.phi_II)}, {"theta_II_deg", to_degrees(c.theta_II)},
+                               {"height", c.height_max}, {"negative_3d_before", c.negative_3d_before},
+                               {"in_negative_out_positive_after", c.in_negative_out_positive_after}};
+      else
+        j["height_maximum"] = nullptr;
+      nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+      for (const auto& r : c.states)
+        rows.push_back({{"phi_deg", to_degrees(r.phi)}, {"theta_deg", to_degrees(r.theta)},
+                        {"W", r.W}, {"L", r.L}, {"H", r.H},
+                        {"W_closed", r.W_closed}, {"L_closed", r.L_closed}, {"H_closed", r.H_closed},
+                        {"W_difference", r.W - r.W_closed}, {"L_difference", r.L - r.L_closed}, {"H_difference", r.H - r.H_closed},
+                        {"nu_in", r.nu_in}, {"nu_out", r.nu_out}, {"nu_in_closed", r.nu_in_closed}, {"nu_out_closed", r.nu_out_closed},
+                        {"bond_gap", r.bond_gap}});
+      j["states"] = rows;
+      j["seconds"] = c.seconds;
+      if (s->json) {
+        std::cout << document_text(j) << "\n";
+        return;
+      }
+      char line[320];
+      std::snprintf(line, sizeof line, "stacked metamaterial %d, alpha %g deg, beta %g deg, l %g, %d layers, %d traced steps\n",
+                    s->stacked, alpha_deg, s->beta_deg, s->l, s->layers, s->stacked_steps);
+      std::cout << line;
+      std::snprintf(line, sizeof line,
+                    "  residual <= %.1e, bond gap <= %.1e, W L H vs closed forms <= %.1e, nu_in nu_out <= %.1e (rel)\n",
+                    c.max_residual, c.max_bond_gap, c.max_dimension_difference, c.max_ratio_difference);
+      std::cout << line;
+      if (c.has_maximum) {
+        std::snprintf(line, sizeof line, "  height maximum %.12g at phi_II %.12g deg\n", c.height_max, to_degrees(c.phi_II));
+        std::cout << line;
+      } else {
+        std::cout << "  no height maximum on the traced path\n";
+      }
+      return;
+    }
+    if (s->unit.empty()) throw InputError("--unit", "is required (or --stacked 1..4)");
+    for (auto* o : {olay, ostep})
+      if (o->count() > 0) throw InputError(o->get_name(), "applies only with --stacked");
     using metamaterial::MetamaterialUnit;
     metamaterial::MetamaterialParams p;
     if (s->unit == "square-twist") p.unit = MetamaterialUnit::kSquareTwist;
