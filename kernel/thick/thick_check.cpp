@@ -46,6 +46,7 @@ Extension read_extension(const CreasePattern& p) {
   const nlohmann::ordered_json& t = p.extra[kThicknessKey];
   const nlohmann::ordered_json& h = p.extra[kHeightsKey];
   if (!t.is_array()) throw InputError(kThicknessKey, "must be an array (one thickness per face)");
+  if (p.num_faces() == 0 || p.num_edges() == 0) throw InputError(kThicknessKey, "the sheet has no faces or no edges");
   if (static_cast<int>(t.size()) != p.num_faces())
     throw InputError(kThicknessKey, "has " + std::to_string(t.size()) + " entries for " + std::to_string(p.num_faces()) + " faces");
   if (!h.is_array()) throw InputError(kHeightsKey, "must be an array (one entry per edge)");

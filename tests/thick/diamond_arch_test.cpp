@@ -19,6 +19,8 @@
 #include "kernel/solve/rank.hpp"
 #include "kernel/thick/hinge_heights.hpp"
 #include "kernel/thick/panel_compatibility.hpp"
+#include "kernel/pattern/read_pattern.hpp"
+#include "kernel/thick/thick_check.hpp"
 #include "kernel/thick/thick_mobility.hpp"
 
 namespace rigidfold {
@@ -224,6 +226,38 @@ TEST(DiamondArch, ThickArchIsTracedWithOneDofOnTheZeroThicknessMotionAndCurves) 
               "valley 171 deg; %.1e off the zero-thickness motion, residual %.1e, DOF 1 with sigma_kept/cut >= %.1e; "
               "bends %.2f deg end to end (turns %.1e off (4-39))\n",
               n, trace.points.size(), landed, off, worst_residual, worst_sigma_ratio, previous_turn * 180 / kPi, worst_turn);
+}
+
+// data/thick/diamond_arch_6_a30_thick.fold is this test's thick sheet (t1 = 0.03, t2 = 0.02) written
+// as a thick FOLD (rigidfold:thickness per face, rigidfold:hinge_heights per edge), for
+// `rigidfold check/trace`. It must stay what the generator builds, and thick_check must read it
+// as the same sheet: its flat state is singular (first-order DOF above 1, the six Bricard loops'
+// flat bifurcation), so check answers "undecided" there; the folded states above have DOF 1.
+TEST(DiamondArch, BundledThickFoldIsTheGeneratorsSheet) {
+  const generators::DiamondArchParams params = arch_params();
+  const CreasePattern flat = generators::diamond_arch(params);
+  const Topology topology = build_topology(flat);
+  const generators::DiamondArchThick model = generators::diamond_arch_thick(flat, topology, params, 0.03, 0.02);
+  const ThickHeightSheet sheet = thick_sheet_from_hinge_heights(flat, topology, model.edge_heights);
+  const CreasePattern file = read_pattern(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/thick/diamond_arch_6_a30_thick.fold");
+  ASSERT_TRUE(is_thick_fold(file));
+  ASSERT_EQ(file.num_vertices(), sheet.pattern.num_vertices());
+  ASSERT_EQ(file.num_edges(), sheet.pattern.num_edges());
+  double worst = 0.0;
+  for (int v = 0; v < file.num_vertices(); ++v)
+    worst = std::max(worst, (std::ldexp(1.0, file.length_exponent) * file.vertices[v] - std::ldexp(1.0, sheet.pattern.length_exponent) * sheet.pattern.vertices[v]).cwiseAbs().maxCoeff());
+  EXPECT_LE(worst, 1e-14);
+  const ThickCheckReport r = thick_check(file, build_topology(file));
+  EXPECT_EQ(r.hinges, flat.num_edges());
+  EXPECT_EQ(r.holes, params.vertices);
+  const ThickMobilityReport m = thick_mobility(sheet, Eigen::VectorXd::Zero(flat.num_edges()), {}, 1e-12);
+  EXPECT_EQ(r.mobility.dof, m.dof);
+  EXPECT_GT(m.dof, 1);
+  EXPECT_EQ(r.verdict, "undecided");
+  EXPECT_NEAR(r.min_thickness * std::ldexp(1.0, file.length_exponent), 0.02, 1e-15);
+  EXPECT_NEAR(r.max_thickness * std::ldexp(1.0, file.length_exponent), 0.05, 1e-15);
+  std::printf("bundled thick arch: flat-state first-order DOF %d (file) / %d (built), smallest kept singular value %.2e\n",
+              r.mobility.dof, m.dof, m.rank.sigma_kept);
 }
 
 }  // namespace
