@@ -11,7 +11,8 @@
 
 namespace rigidfold::waterbomb {
 
-WaterbombCurve waterbomb_curve(int n, double theta0, double k_m, double k_v, int samples) {
+WaterbombCurve waterbomb_curve(int n, double theta0, double k_m, double k_v, int samples,
+                               const LoadedPathOptions& options) {
   if (samples < 3 || samples > 2001)
     throw InputError("samples", "must be between 3 and 2001, got " + std::to_string(samples));
   const WaterbombSprings springs = springs_at_rest_theta(n, theta0, k_m, k_v);
@@ -25,9 +26,12 @@ WaterbombCurve waterbomb_curve(int n, double theta0, double k_m, double k_v, int
     thetas.push_back(th);
   }
   thetas.erase(std::unique(thetas.begin(), thetas.end()), thetas.end());
-  const LoadedPath loaded = waterbomb_loaded_path(n, theta0, k_m, k_v, thetas);
+  const LoadedPath loaded = waterbomb_loaded_path(n, theta0, k_m, k_v, thetas, options);
 
   WaterbombCurve out;
+  out.flat_crossing = loaded.flat_crossing;
+  out.stopped_at_flat = loaded.stopped_at_flat;
+  out.stop_message = loaded.stop_message;
   for (const LoadedPoint& q : loaded.points) {
     CurveSample s;
     s.theta = q.theta;

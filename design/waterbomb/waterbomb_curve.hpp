@@ -9,9 +9,11 @@
 // kForceAgreement relative to max(1, |F|)); unchecked samples keep only their theta.
 // Units: angles radians; energy in the unit of k times rad^2; lengths in the generated base's
 // units (radius 1, valley crease length r = cos(pi/n)); force in energy unit per length unit.
+#include <string>
 #include <vector>
 
 #include "design/waterbomb/waterbomb_energy.hpp"
+#include "design/waterbomb/waterbomb_loaded_path.hpp"
 
 namespace rigidfold::waterbomb {
 
@@ -31,6 +33,11 @@ struct CurveSample {
 struct WaterbombCurve {
   std::vector<CurveSample> samples;  // increasing theta, the flat state excluded
   int unchecked = 0;                 // samples whose checks failed (numbers not to be shown)
+  // The flat state's tangent cone and the branch the general model continued along
+  // (waterbomb_loaded_path.hpp); stopped_at_flat: the far-side samples are unchecked, why.
+  FlatCrossing flat_crossing;
+  bool stopped_at_flat = false;
+  std::string stop_message;
   static constexpr double kFoldAngleAgreement = 1e-9;  // radians
   static constexpr double kForceAgreement = 1e-9;      // relative
 };
@@ -39,6 +46,8 @@ struct WaterbombCurve {
 // range inside and the flat state pi/2 nudged by the same amount to the side it is on.
 // Throws InputError for bad n, theta0, stiffness (as waterbomb_bistability) or
 // InputError("samples") outside [3, 2001].
-WaterbombCurve waterbomb_curve(int n, double theta0, double k_m, double k_v, int samples);
+// options: passed to waterbomb_loaded_path (letters read reversed at the flat crossing).
+WaterbombCurve waterbomb_curve(int n, double theta0, double k_m, double k_v, int samples,
+                               const LoadedPathOptions& options = {});
 
 }  // namespace rigidfold::waterbomb

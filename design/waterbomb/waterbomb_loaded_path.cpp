@@ -1,6 +1,9 @@
 #include "design/waterbomb/waterbomb_loaded_path.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <string>
 
 #include "data/generators/waterbomb.hpp"
 #include "design/waterbomb/waterbomb_force.hpp"
@@ -13,7 +16,8 @@
 
 namespace rigidfold::waterbomb {
 
-LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, const std::vector<double>& thetas) {
+LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, const std::vector<double>& thetas,
+                                 const LoadedPathOptions& options) {
   const WaterbombSprings ws = springs_at_rest_theta(n, theta0, k_m, k_v);
   for (double th : thetas)
     if (!(th > 0.0 && th < theta_limit(n)) || th == kPi / 2)
@@ -31,13 +35,19 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
     if (p.assignments[e] == Assignment::Valley) load.support_edges.push_back(e);
   const double r = std::cos(kPi / n);  // the generator's valley (mid-line) crease length
 
-  auto solve = [&](double th) {
+  for (int e : options.flipped_letters)
+    if (e < 0 || e >= 2 * n) throw InputError("flipped_letters", "crease " + std::to_string(e) + " is not one of the 2n creases");
+
+  // start: free fold angles; empty = the symmetric closed form at th (near side only).
+  Eigen::VectorXd last_x;
+  auto solve = [&](double th, const Eigen::VectorXd& start) {
     LoadedPoint q;
     q.theta = th;
     load.height = r * std::cos(th);
     const Eigen::VectorXd symmetric = per_edge(waterbomb_fold_angles(n, th));
-    const HeightControlledEquilibrium eq =
-        vertex_height_equilibrium(p, sys, topo, springs, load, sys.unknowns_from_edges(symmetric));
+    const HeightControlledEquilibrium eq = vertex_height_equilibrium(
+        p, sys, topo, springs, load, start.size() ? start : sys.unknowns_from_edges(symmetric));
+    last_x = eq.x;
     const ForcePoint f = waterbomb_force(ws, theta0, r, th);
     q.height = f.height;
     q.deflection = f.deflection;
@@ -51,18 +61,84 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
   };
 
   LoadedPath out;
-  for (double th : thetas) out.points.push_back(solve(th));
+  out.points.resize(thetas.size());
+  std::vector<Eigen::VectorXd> xs(thetas.size());  // far side: the solutions, for bisection starts
+  std::vector<std::size_t> far;
+  for (std::size_t i = 0; i < thetas.size(); ++i) {
+    if (thetas[i] > kPi / 2)
+      far.push_back(i);
+    else
+      out.points[i] = solve(thetas[i], Eigen::VectorXd());
+  }
+  if (!far.empty()) {
+    out.crosses_flat = true;
+    CreasePattern lettered = p;
+    for (int e : options.flipped_letters)
+      lettered.assignments[e] = lettered.assignments[e] == Assignment::Mountain ? Assignment::Valley
+                                : lettered.assignments[e] == Assignment::Valley ? Assignment::Mountain
+                                                                                : lettered.assignments[e];
+    out.flat_crossing = waterbomb_flat_crossing(lettered, load.support_edges);
+    std::stable_sort(far.begin(), far.end(), [&](std::size_t a, std::size_t b) { return thetas[a] < thetas[b]; });
+    for (std::size_t i : far) out.points[i].theta = thetas[i];
+    if (!out.flat_crossing.continues) {
+      out.stopped_at_flat = true;
+      out.stop_message = out.flat_crossing.message;
+    } else {
+      // Natural continuation in the height from the flat state along the chosen ray.
+      const FlatBranch& ray = out.flat_crossing.branches[out.flat_crossing.taken];
+      const Eigen::VectorXd ray_x = sys.unknowns_from_edges(ray.direction);
+      Eigen::VectorXd x_prev = Eigen::VectorXd::Zero(sys.num_unknowns()), x_prev2 = x_prev;
+      double h_prev = 0.0, h_prev2 = 0.0;
+      bool first = true, failed = false;
+      const double max_dh = LoadedPathOptions::kMaxHeightStep * r;
+      auto step_to = [&](double th) -> LoadedPoint {
+        const double h = r * std::cos(th);
+        const Eigen::VectorXd start =
+            first ? Eigen::VectorXd(ray_x * (h / ray.height_rate))
+                  : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((h - h_prev) / (h_prev - h_prev2)));
+        const LoadedPoint q = solve(th, start);
+        if (q.converged) {
+          x_prev2 = x_prev;
+          h_prev2 = h_prev;
+          x_prev = last_x;
+          h_prev = h;
+          first = false;
+        }
+        return q;
+      };
+      for (std::size_t i : far) {
+        const double h = r * std::cos(thetas[i]);
+        while (!failed && h_prev - h > max_dh)
+          if (!step_to(std::acos(std::clamp((h_prev - max_dh) / r, -1.0, 1.0))).converged) failed = true;
+        if (!failed) {
+          out.points[i] = step_to(thetas[i]);
+          failed = !out.points[i].converged;
+          xs[i] = last_x;
+        }
+        if (failed && out.stop_message.empty())
+          out.stop_message = "the continuation from the flat state did not converge before theta = " +
+                             std::to_string(thetas[i] * 180.0 / kPi) + " deg";
+      }
+    }
+  }
   for (std::size_t i = 1; i < out.points.size(); ++i) {
     const LoadedPoint& a = out.points[i - 1];
     const LoadedPoint& b = out.points[i];
     if (!a.converged || !b.converged) continue;
     if ((a.theta < kPi / 2) != (b.theta < kPi / 2)) continue;  // never across the flat state
     if ((a.min_eigenvalue > 0.0) == (b.min_eigenvalue > 0.0)) continue;
+    // Far side: start from the two neighbours' solutions interpolated (never the closed form).
+    const bool far_pair = a.theta > kPi / 2 && xs[i - 1].size() && xs[i].size();
+    auto start_at = [&](double th) {
+      if (!far_pair) return Eigen::VectorXd();
+      const double t = (th - a.theta) / (b.theta - a.theta);
+      return Eigen::VectorXd((1 - t) * xs[i - 1] + t * xs[i]);
+    };
     double lo = a.theta, hi = b.theta;
     const bool lo_positive = a.min_eigenvalue > 0.0;
     while (std::fabs(hi - lo) > 1e-10) {
       const double mid = 0.5 * (lo + hi);
-      const LoadedPoint m = solve(mid);
+      const LoadedPoint m = solve(mid, start_at(mid));
       if (!m.converged) break;
       ((m.min_eigenvalue > 0.0) == lo_positive ? lo : hi) = mid;
     }

@@ -8,9 +8,19 @@
 // asymmetric mode: the loaded symmetric state buckles (symmetry breaking) there.
 // r is the valley crease length of the generated base (cos(pi/n) for radius 1); forces are
 // in (energy unit of k) per length unit.
+//
+// Through the flat state: samples on the near side (theta < pi/2, vertex above its supports)
+// start from the symmetric closed form at their theta. The far side is reached by
+// continuation from the flat state along the one branch of its tangent cone that keeps the
+// M/V letters (waterbomb_flat_crossing.hpp): the first start is that ray to first order, the
+// next ones a secant predictor in the height, with hidden steps of at most kMaxHeightStep * r
+// between samples. No such branch (or more than one): the far-side samples are returned
+// unconverged and `stopped_at_flat` says why. The closed form is compared, never used, there.
+#include <string>
 #include <vector>
 
 #include "design/waterbomb/waterbomb_energy.hpp"
+#include "design/waterbomb/waterbomb_flat_crossing.hpp"
 
 namespace rigidfold::waterbomb {
 
@@ -31,11 +41,26 @@ struct LoadedPath {
   // theta (radians) where the smallest eigenvalue crosses 0 between consecutive points,
   // bisected to 1e-10 rad: where the loaded symmetric state gains or loses stability.
   std::vector<double> stability_changes;
+  // Only when some theta > pi/2: the flat state's cone and the branch taken.
+  bool crosses_flat = false;
+  FlatCrossing flat_crossing;
+  bool stopped_at_flat = false;
+  std::string stop_message;  // why the far side has no points (flat crossing or a failed continuation step)
+};
+
+struct LoadedPathOptions {
+  // Creases (edge indices of the generated base) whose M/V letter is read reversed when the
+  // branch through flat is chosen (the springs keep the base's letters): to ask what happens
+  // when no cone branch keeps the letters.
+  std::vector<int> flipped_letters;
+  static constexpr double kMaxHeightStep = 0.02;  // far-side continuation step, times r
 };
 
 // Inputs: n >= 3, theta0, k_m, k_v as waterbomb_bistability; thetas (radians) in
 // (0, theta_limit(n)), none at pi/2 (the flat state is singular). Throws InputError for bad
 // input; points that do not converge are returned with converged = false.
-LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, const std::vector<double>& thetas);
+// Throws InputError("flipped_letters") for an index that is not one of the 2n creases.
+LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, const std::vector<double>& thetas,
+                                 const LoadedPathOptions& options = {});
 
 }  // namespace rigidfold::waterbomb

@@ -1,0 +1,56 @@
+#pragma once
+// Which branch the loaded waterbomb path takes through the flat state (issue 14 item 3).
+//
+// The flat state is a bifurcation point: the M/V-preserving symmetric branch and its
+// all-reversed mirror meet there, and the loaded path has a corner. The branch on the far
+// side (vertex below its supports, height < 0) is chosen from the tangent cone of the
+// closure system (kernel/solve/tangent_cone.hpp) at x = 0, never from a closed form:
+//   - system: the base's closure rows plus the rotational-symmetry equalities of the
+//     symmetric load (crease 2k = crease 0, crease 2k+1 = crease 1, the generator's order).
+//     Without them the flat-state cone of one 2n-crease vertex is a quadric continuum (one
+//     quadratic condition on a (2n-2)-dimensional kernel), with no discrete branches to pick;
+//     with them it has isolated lines: the symmetric branches;
+//   - every line gives two rays (branches leaving flat); each ray's first-order vertex
+//     height rate dh/ds is the offset of the plane fitted through the supports' far ends
+//     (first-order positions in crease 0's frame, +z the sheet's side that is up at rest);
+//   - far-side rays (dh/ds < 0) are kept when every M/V crease's direction entry has its
+//     letter's sign (|entry| <= Tolerances::sign_threshold: no sign, never wrong).
+// Exactly one letter-keeping far-side ray: the path continues along it. None, or more than
+// one: `continues` is false and `message` says why (no silent choice).
+//
+// Units: directions are unit vectors of per-edge fold angles (radians per unit arc length);
+// height rates in the pattern's length unit per unit arc length.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "kernel/pattern/crease_pattern.hpp"
+
+namespace rigidfold::waterbomb {
+
+struct FlatBranch {
+  Eigen::VectorXd direction;     // per edge, unit
+  double height_rate = 0.0;      // dh/ds: > 0 the vertex rises above its supports
+  bool far_side = false;         // height_rate < 0
+  bool keeps_letters = false;
+  int first_wrong_crease = -1;   // the first M/V crease whose sign contradicts its letter
+};
+
+struct FlatCrossing {
+  int kernel_dimension = 0;      // first-order DOF of the symmetric system at flat
+  int cone_lines = 0;            // isolated tangent lines of the cone
+  std::vector<FlatBranch> branches;  // two rays per line (c, then -c)
+  int far_side_branches = 0;
+  int letter_keeping = 0;        // far-side branches that keep the letters
+  int taken = -1;                // index into branches, -1 when the path stops at flat
+  bool continues = false;
+  std::string message;           // why it stops (empty when it continues)
+};
+
+// Inputs: a waterbomb base from data/generators/waterbomb.hpp (vertex 0 the centre, creases
+// 0..2n-1 in CCW order; only its assignments are read as letters, so a caller may flip
+// some), and the support creases (their far ends rest on the plane).
+// Throws std::invalid_argument for a pattern that is not such a base.
+FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vector<int>& support_edges);
+
+}  // namespace rigidfold::waterbomb

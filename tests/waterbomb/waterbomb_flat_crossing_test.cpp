@@ -1,0 +1,123 @@
+// The loaded waterbomb path through the flat state (issue 14 item 3): the general model's
+// far side is reached along the tangent-cone branch that keeps the M/V letters, and equals
+// the closed-form symmetric curve there; the mirror branch exists and is rejected; with a
+// letter flipped no branch keeps the letters and the path stops at flat.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "data/generators/waterbomb.hpp"
+#include "design/waterbomb/waterbomb_curve.hpp"
+#include "design/waterbomb/waterbomb_flat_crossing.hpp"
+#include "design/waterbomb/waterbomb_kinematics.hpp"
+#include "design/waterbomb/waterbomb_loaded_path.hpp"
+#include "kernel/math/angle_units.hpp"
+
+namespace rigidfold::waterbomb {
+namespace {
+
+std::vector<int> valley_creases(const CreasePattern& p) {
+  std::vector<int> v;
+  for (int e = 0; e < p.num_edges(); ++e)
+    if (p.assignments[e] == Assignment::Valley) v.push_back(e);
+  return v;
+}
+
+TEST(WaterbombFlatCrossing, ConeHasTheMirrorAndOnlyTheLetterKeepingBranchIsTaken) {
+  for (int n : {4, 6}) {
+    SCOPED_TRACE(n);
+    generators::WaterbombParams wp;
+    wp.n = n;
+    const CreasePattern p = generators::waterbomb_base(wp);
+    const FlatCrossing c = waterbomb_flat_crossing(p, valley_creases(p));
+    EXPECT_EQ(c.kernel_dimension, 2);  // the symmetric (gamma_m, gamma_v) plane
+    EXPECT_EQ(c.cone_lines, 2);        // the path's two one-sided tangents
+    ASSERT_EQ(c.branches.size(), 4u);
+    ASSERT_EQ(c.far_side_branches, 2);  // the letter-keeping branch and its mirror
+    ASSERT_TRUE(c.continues) << c.message;
+    ASSERT_GE(c.taken, 0);
+    const FlatBranch& taken = c.branches[c.taken];
+    EXPECT_TRUE(taken.far_side);
+    EXPECT_TRUE(taken.keeps_letters);
+    int rejected = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (i == c.taken || !c.branches[i].far_side) continue;
+      ++rejected;
+      EXPECT_FALSE(c.branches[i].keeps_letters);
+      EXPECT_GE(c.branches[i].first_wrong_crease, 0);
+    }
+    EXPECT_EQ(rejected, 1);
+    // Independent oracle: the taken ray is the closed form's one-sided tangent at 90+ deg.
+    const FoldPair d = waterbomb_fold_angle_derivatives(n, kPi / 2, +1);
+    Eigen::VectorXd expected = waterbomb_edge_angles(p, d);
+    expected.normalize();
+    EXPECT_LE((taken.direction - expected).lpNorm<Eigen::Infinity>(), 1e-9);
+    // The rejected far-side ray is the mirror of the way in (the 90- tangent, reversed and negated).
+    const FoldPair din = waterbomb_fold_angle_derivatives(n, kPi / 2, -1);
+    Eigen::VectorXd mirror = waterbomb_edge_angles(p, din);
+    mirror.normalize();
+    for (int i = 0; i < 4; ++i)
+      if (i != c.taken && c.branches[i].far_side)
+        EXPECT_LE((c.branches[i].direction - mirror).lpNorm<Eigen::Infinity>(), 1e-9);
+  }
+}
+
+TEST(WaterbombFlatCrossing, GeneralCurvePastFlatEqualsTheClosedForm) {
+  for (int n : {4, 6}) {
+    SCOPED_TRACE(n);
+    const double theta0 = to_radians(60.0);
+    std::vector<double> thetas;
+    for (double deg : {50.0, 75.0, 89.5, 90.5, 100.0, 115.0, 130.0}) thetas.push_back(to_radians(deg));
+    const LoadedPath path = waterbomb_loaded_path(n, theta0, 1.0, 2.0, thetas);
+    ASSERT_TRUE(path.crosses_flat);
+    ASSERT_FALSE(path.stopped_at_flat) << path.stop_message;
+    EXPECT_TRUE(path.flat_crossing.branches[path.flat_crossing.taken].keeps_letters);
+    for (const LoadedPoint& q : path.points) {
+      SCOPED_TRACE(to_degrees(q.theta));
+      ASSERT_TRUE(q.converged);
+      EXPECT_LE(std::fabs(q.force - q.force_closed_form), 1e-9 * std::max(1.0, std::fabs(q.force_closed_form)));
+      EXPECT_LE(q.fold_angle_gap, 1e-9);
+    }
+    // Far side of flat the force is the return branch (negative past the jump).
+    EXPECT_LT(path.points[3].force, 0.0);
+    EXPECT_GT(path.points[2].force, 0.0);
+  }
+}
+
+TEST(WaterbombFlatCrossing, FlippedLetterStopsTheCurveAtFlat) {
+  generators::WaterbombParams wp;
+  wp.n = 4;
+  CreasePattern p = generators::waterbomb_base(wp);
+  p.assignments[1] = Assignment::Valley;  // a corner crease, M in the base
+  const FlatCrossing c = waterbomb_flat_crossing(p, {0, 2, 4, 6});
+  EXPECT_EQ(c.cone_lines, 2);
+  EXPECT_EQ(c.far_side_branches, 2);
+  EXPECT_EQ(c.letter_keeping, 0);
+  EXPECT_FALSE(c.continues);
+  EXPECT_EQ(c.taken, -1);
+  EXPECT_NE(c.message.find("keeps the M/V letters"), std::string::npos) << c.message;
+
+  LoadedPathOptions opt;
+  opt.flipped_letters = {1};
+  const WaterbombCurve curve = waterbomb_curve(4, to_radians(60.0), 1.0, 1.0, 9, opt);
+  EXPECT_TRUE(curve.stopped_at_flat);
+  EXPECT_EQ(curve.stop_message, c.message);
+  int near = 0, far = 0;
+  for (const CurveSample& s : curve.samples) {
+    if (s.theta < kPi / 2) {
+      EXPECT_TRUE(s.checked);
+      ++near;
+    } else {
+      EXPECT_FALSE(s.checked);
+      ++far;
+    }
+  }
+  EXPECT_GT(near, 0);
+  EXPECT_GT(far, 0);
+  EXPECT_EQ(curve.unchecked, far);
+}
+
+}  // namespace
+}  // namespace rigidfold::waterbomb
