@@ -121,6 +121,7 @@ FaceCycleProof face_cycle_loop_gain_proof(const CreasePattern& pattern, const To
                                           const std::vector<Eigen::Vector2d>& box_lo,
                                           const std::vector<Eigen::Vector2d>& box_hi) {
   FaceCycleProof out;
+  std::vector<char> locked(pattern.num_vertices(), 0);
   auto degree4 = [&](int v) { return topology.stars[v].interior() && topology.stars[v].fans[0].edges.size() == 4; };
   for (int f = 0; f < pattern.num_faces(); ++f) {
     const std::vector<int>& corners = pattern.faces[f];
@@ -139,15 +140,23 @@ FaceCycleProof face_cycle_loop_gain_proof(const CreasePattern& pattern, const To
     if (static_cast<int>(creases.size()) != n) continue;
     ++out.faces_tried;
     IntervalLoopGainProof proof = interval_loop_gain_proof(pattern, topology, box_lo, box_hi, corners, creases);
-    if (proof.proven) {
+    if (!proof.proven) continue;
+    ++out.faces_proven;
+    for (int v : corners) locked[v] = 1;
+    if (!out.proven) {
       out.proven = true;
       out.face = f;
       out.cycle_vertices = corners;
       out.cycle_creases = creases;
       out.proof = std::move(proof);
-      return out;
     }
   }
+  for (int v = 0; v < pattern.num_vertices(); ++v)
+    if (locked[v]) out.locked_vertices.push_back(v);
+  out.every_crease_locked = out.proven;
+  for (int e = 0; e < pattern.num_edges() && out.every_crease_locked; ++e)
+    if (topology.edge_is_hinge[e] && !locked[pattern.edges[e][0]] && !locked[pattern.edges[e][1]])
+      out.every_crease_locked = false;
   return out;
 }
 

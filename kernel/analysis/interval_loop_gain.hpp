@@ -55,14 +55,21 @@ namespace rigidfold {
 // The same proof tried on the cycle around each face whose corners are all interior degree-4
 // vertices (the central square of a square twist), for patterns with no flat-foldable
 // witness: the first-order modes need no Kawasaki, so the exact numbers (zero-width boxes)
-// and patterns that are not flat-foldable within their rounding are covered too. Returns the
-// first face whose cycle is proven; faces_tried counts the faces whose cycles were tried.
+// and patterns that are not flat-foldable within their rounding are covered too. Every face
+// is tried; the first proven cycle is reported, and `locked_vertices` collects the corners
+// of every proven cycle: no crease at them folds. `every_crease_locked`: every hinge crease
+// (two faces across it) has an end among them, so no rigid motion from flat that keeps the
+// letters folds any crease at all (strict or weak); otherwise other creases may still fold.
+// faces_tried counts the faces whose cycles were tried.
 struct FaceCycleProof {
   bool proven = false;
   int face = -1;
   std::vector<int> cycle_vertices, cycle_creases;
   IntervalLoopGainProof proof;
   int faces_tried = 0;
+  int faces_proven = 0;
+  std::vector<int> locked_vertices;  // increasing
+  bool every_crease_locked = false;
 };
 FaceCycleProof face_cycle_loop_gain_proof(const CreasePattern& pattern, const Topology& topology,
                                           const std::vector<Eigen::Vector2d>& box_lo,

@@ -14,6 +14,7 @@
 //     a rounded Miura, which folds within its precision, is never proven.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -233,6 +234,35 @@ TEST(IntervalLoopGain, RoundedMiuraIsNeverProvenRigid) {
   const FaceCycleProof f = face_cycle_loop_gain_proof(p, t, b.lo, b.hi);
   EXPECT_FALSE(f.proven);
   EXPECT_GT(f.faces_tried, 0);
+}
+
+TEST(IntervalLoopGain, CreasesAwayFromTheProvenCyclesAreNotClaimed) {
+  // A perturbed 4 x 4 Miura: its four inner faces' cycles are proven, and every crease
+  // touches their corners. With the box of the inner vertex nearest the origin made huge, the
+  // cycles of the three inner faces that hold it or a neighbour of it (whose crease vectors
+  // end in that box) are no longer proven; the far face's is, but the creases from that vertex
+  // to the border touch no proven cycle, so the proof is not claimed for the pattern (check
+  // then runs the numerical search).
+  generators::MiuraParams m;
+  m.rows = m.cols = 4;
+  m.perturbation = 0.02;
+  const CreasePattern p = generators::miura_ori(m);
+  const Topology t = build_topology(p);
+  VertexBoxes b = vertex_boxes(p, 0.0);
+  const FaceCycleProof all = face_cycle_loop_gain_proof(p, t, b.lo, b.hi);
+  EXPECT_EQ(all.faces_proven, 4);
+  EXPECT_TRUE(all.every_crease_locked);
+  // The interior vertex nearest the origin sits in one inner face only.
+  int corner = -1;
+  for (int v : t.interior_vertices)
+    if (corner < 0 || p.vertices[v].x() + p.vertices[v].y() < p.vertices[corner].x() + p.vertices[corner].y()) corner = v;
+  b.lo[corner] -= Eigen::Vector2d(0.4, 0.4);
+  b.hi[corner] += Eigen::Vector2d(0.4, 0.4);
+  const FaceCycleProof some = face_cycle_loop_gain_proof(p, t, b.lo, b.hi);
+  EXPECT_TRUE(some.proven);
+  EXPECT_EQ(some.faces_proven, 1);
+  EXPECT_FALSE(some.every_crease_locked);
+  EXPECT_FALSE(std::binary_search(some.locked_vertices.begin(), some.locked_vertices.end(), corner));
 }
 
 std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
