@@ -233,7 +233,20 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
       const bool holds_witness =
           proof.gain.contains(exact->loop_gain) || (exact->loop_gain != 0.0 && proof.gain.contains(1.0 / exact->loop_gain));
       ip.loop_gain_enclosure = {proof.gain.lo, proof.gain.hi};
+      // Every crease must have an end at a locked vertex (this cycle's, or a proven face
+      // cycle's), or a crease elsewhere might still fold alone.
+      bool every_crease_locked = false;
       if (proof.proven && holds_witness) {
+        const FaceCycleProof faces = face_cycle_loop_gain_proof(w.witness, w.witness_topology, w.box_lo, w.box_hi);
+        std::vector<char> locked(w.witness.num_vertices(), 0);
+        for (int v : exact->cycle_vertices) locked[v] = 1;
+        for (int v : faces.locked_vertices) locked[v] = 1;
+        every_crease_locked = true;
+        for (int e = 0; e < w.witness.num_edges(); ++e)
+          if (w.witness_topology.edge_is_hinge[e] && !locked[w.witness.edges[e][0]] && !locked[w.witness.edges[e][1]])
+            every_crease_locked = false;
+      }
+      if (proof.proven && holds_witness && every_crease_locked) {
         r.verdict = FoldabilityClass::kNotFoldableProof;
         r.is_proof = true;
         r.dof = 0;
@@ -250,8 +263,10 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
         r.input_precision = ip;
         return;
       }
-      ip.loop_gain_proof_note = proof.proven ? "the enclosure does not hold the witness's own gain (internal check failed)"
-                                             : proof.why_not;
+      ip.loop_gain_proof_note = !proof.proven ? proof.why_not
+                                : !holds_witness ? "the enclosure does not hold the witness's own gain (internal check failed)"
+                                                 : "proven for the creases at the cycle's vertices, but some crease has no end "
+                                                   "at a vertex of a proven cycle";
     }
     // A proof for the witness only: the least move makes every vertex flat-foldable but does
     // not aim at the loop gains, so a rounded Miura's witness misses gain 1 by ~1e-6 while a
