@@ -127,20 +127,19 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
     if (!a.converged || !b.converged) continue;
     if ((a.theta < kPi / 2) != (b.theta < kPi / 2)) continue;  // never across the flat state
     if ((a.min_eigenvalue > 0.0) == (b.min_eigenvalue > 0.0)) continue;
-    // Far side: start from the two neighbours' solutions interpolated (never the closed form).
+    // Far side: start from the bracket end's solution (never the closed form); the bracket
+    // shrinks, so the start stays within |hi - lo| of the answer.
     const bool far_pair = a.theta > kPi / 2 && xs[i - 1].size() && xs[i].size();
-    auto start_at = [&](double th) {
-      if (!far_pair) return Eigen::VectorXd();
-      const double t = (th - a.theta) / (b.theta - a.theta);
-      return Eigen::VectorXd((1 - t) * xs[i - 1] + t * xs[i]);
-    };
+    Eigen::VectorXd x_lo = xs[i - 1], x_hi = xs[i];
     double lo = a.theta, hi = b.theta;
     const bool lo_positive = a.min_eigenvalue > 0.0;
     while (std::fabs(hi - lo) > 1e-10) {
       const double mid = 0.5 * (lo + hi);
-      const LoadedPoint m = solve(mid, start_at(mid));
+      const LoadedPoint m = solve(mid, far_pair ? x_lo : Eigen::VectorXd());
       if (!m.converged) break;
-      ((m.min_eigenvalue > 0.0) == lo_positive ? lo : hi) = mid;
+      const bool to_lo = (m.min_eigenvalue > 0.0) == lo_positive;
+      (to_lo ? lo : hi) = mid;
+      (to_lo ? x_lo : x_hi) = last_x;
     }
     out.stability_changes.push_back(0.5 * (lo + hi));
   }
