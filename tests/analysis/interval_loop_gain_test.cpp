@@ -220,6 +220,35 @@ TEST(IntervalLoopGain, NoProofOnceTheBoxesHoldAFoldablePattern) {
   EXPECT_NE(r.verdict, FoldabilityClass::kNotFoldableProof) << r.reason;
 }
 
+TEST(IntervalLoopGain, FoldableSquareTwistsAndMiurasAreNeverProvenRigid) {
+  // Exact foldable patterns (the multiplier model folds them): at every twist the Type 3 and
+  // Type 4 square twists, and Miura-ori of several angles, keep loop gain 1 inside every
+  // face cycle's enclosure on their exact numbers, so nothing is proven.
+  for (int deg = 10; deg <= 80; deg += 10)
+    for (const auto type : {generators::SquareTwistType::Type3, generators::SquareTwistType::Type4}) {
+      generators::SquareTwistParams sp;
+      sp.twist = deg * kPi / 180;
+      const CreasePattern p = generators::square_twist(sp, type);
+      const Topology t = build_topology(p);
+      ASSERT_EQ(check_foldability(p, t).verdict, FoldabilityClass::kFoldable) << deg;
+      const VertexBoxes b = vertex_boxes(p, 0.0);
+      const FaceCycleProof f = face_cycle_loop_gain_proof(p, t, b.lo, b.hi);
+      EXPECT_EQ(f.faces_tried, 1) << deg;
+      EXPECT_FALSE(f.proven) << "twist " << deg << " gain [" << f.proof.gain.lo << ", " << f.proof.gain.hi << "]";
+    }
+  for (const double alpha_deg : {35.0, 55.0, 70.0, 85.0}) {
+    generators::MiuraParams m;
+    m.rows = m.cols = 4;
+    m.alpha = alpha_deg * kPi / 180;
+    const CreasePattern p = generators::miura_ori(m);
+    const Topology t = build_topology(p);
+    const VertexBoxes b = vertex_boxes(p, 0.0);
+    const FaceCycleProof f = face_cycle_loop_gain_proof(p, t, b.lo, b.hi);
+    EXPECT_EQ(f.faces_tried, 4) << alpha_deg;
+    EXPECT_FALSE(f.proven) << alpha_deg;
+  }
+}
+
 TEST(IntervalLoopGain, RoundedMiuraIsNeverProvenRigid) {
   generators::MiuraParams m;
   m.rows = 4;
