@@ -73,7 +73,9 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 // 2001 loaded equilibria on a 360-crease vertex; energy --starts: up to 1000 minimisations)
 // and sorce --optimize/--steps: a search of ~200 joint designs, a trace of up to 2000 steps;
 // waterbomb --sweep-*: up to 400 analyses, and --plot: a Python process per run; metamaterial
-// --cross-check: a traced tessellation of up to 2000 steps) are dropped too, and waterbomb
+// --cross-check: a traced tessellation of up to 2000 steps; energy --barriers: a string
+// method per pair of stable states, 1.7 s in Release on the bundled base; metamaterial
+// --stacked-steps: up to 200 traced steps per layer) are dropped too, and waterbomb
 // --n is held at most 24 (n = 180 checks each state on a 360-crease vertex: ~6 s in Release,
 // far more under ASan), 4 for a split-fold base (see below): a legal run of minutes would
 // count as a libFuzzer timeout (-timeout=30).
@@ -98,6 +100,7 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     const bool costly = token.rfind("--curve", 0) == 0 || token.rfind("--samples", 0) == 0 || token.rfind("--starts", 0) == 0 ||
                         token.rfind("--optimize", 0) == 0 || token.rfind("--steps", 0) == 0 ||
                         token.rfind("--sweep", 0) == 0 || token.rfind("--cross-check", 0) == 0 ||
+                        token.rfind("--barriers", 0) == 0 || token.rfind("--stacked-steps", 0) == 0 ||
                         (args.size() > 1 && args[1] == "waterbomb" && token.rfind("--plot", 0) == 0);
     if (!token.empty() && !costly && token.find('/') == std::string::npos && token.find('\0') == std::string::npos &&
         args.size() < 24)
