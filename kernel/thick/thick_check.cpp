@@ -22,6 +22,13 @@ namespace {
 constexpr const char* kThicknessKey = "rigidfold:thickness";
 constexpr const char* kHeightsKey = "rigidfold:hinge_heights";
 
+// Numbers in messages: 6 significant digits (std::to_string prints 170.000000).
+std::string num(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
 std::string at(const char* key, int i) { return std::string(key) + "[" + std::to_string(i) + "]"; }
 
 double diagonal(const CreasePattern& p) {
@@ -74,8 +81,8 @@ Extension read_extension(const CreasePattern& p) {
     for (int end = 0; end < 2; ++end) {
       const double zv = p.vertices[p.edges[e][end]].z();
       if (std::abs(zv - z) > tol)
-        throw InputError(at(kHeightsKey, e), "is " + std::to_string(to_file_units(p, z)) + " but the edge's vertex " +
-                                                 std::to_string(p.edges[e][end]) + " lies at z = " + std::to_string(to_file_units(p, zv)) +
+        throw InputError(at(kHeightsKey, e), "is " + num(to_file_units(p, z)) + " but the edge's vertex " +
+                                                 std::to_string(p.edges[e][end]) + " lies at z = " + num(to_file_units(p, zv)) +
                                                  ": the sheet is not at its flat state");
     }
   }
@@ -132,7 +139,7 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
   if (dof == 0) {
     report.verdict = "rigid";
     report.reason = "DOF 0 at the flat state: the thick closure is injective to first order there (smallest kept singular value " +
-                    std::to_string(report.mobility.rank.sigma_kept) + ", cut " + std::to_string(report.mobility.rank.threshold) +
+                    num(report.mobility.rank.sigma_kept) + ", cut " + num(report.mobility.rank.threshold) +
                     "), so the flat state is isolated";
     return report;
   }
@@ -200,8 +207,8 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
     ThickCheckStep step;
     step.residual = system.residual(point.x).cwiseAbs().maxCoeff();
     if (!(step.residual <= request.closure_tolerance)) {
-      stop_why = "the step at " + std::to_string(to_degrees(options.landing_values[point.landing] - ref)) + " deg closes only to " +
-                 std::to_string(step.residual);
+      stop_why = "the step at " + num(to_degrees(options.landing_values[point.landing] - ref)) + " deg closes only to " +
+                 num(step.residual);
       break;
     }
     step.rho = sheet.fold_angles(system.edges_from_unknowns(point.x));
@@ -214,7 +221,7 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
   const bool reached = landed_last == request.steps - 1;
   if (reached) {
     report.verdict = "mobile";
-    report.reason = "DOF 1 at the flat state; traced to " + std::to_string(to_degrees(report.target)) + " deg of hinge " +
+    report.reason = "DOF 1 at the flat state; traced to " + num(to_degrees(report.target)) + " deg of hinge " +
                     std::to_string(drive) + " in " + std::to_string(report.steps.size()) + " steps";
   } else {
     report.verdict = "undecided";

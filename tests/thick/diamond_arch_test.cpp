@@ -188,6 +188,8 @@ TEST(DiamondArch, ThickArchIsTracedWithOneDofOnTheZeroThicknessMotionAndCurves) 
     const Eigen::VectorXd zero = generators::diamond_arch_symmetric_state(flat, params, rho_v);
     off = std::max(off, (rho - zero).cwiseAbs().maxCoeff());
     worst_residual = std::max(worst_residual, thick.residual(point.x).cwiseAbs().maxCoeff());
+    // DOF by jacobian_rank's default cut (1e-9 x sigma_max), with the kept singular value
+    // required to sit >= 1e3 x above the cut (worst_sigma_ratio below).
     const ThickMobilityReport m = thick_mobility(sheet, rho, {}, 1e-12);
     EXPECT_EQ(m.dof, 1) << "rho_valley = " << rho_v;
     worst_sigma_ratio = std::min(worst_sigma_ratio, m.rank.sigma_kept / m.rank.threshold);
