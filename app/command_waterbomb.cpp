@@ -7,7 +7,11 @@
 // energy along the 1-DOF symmetric path, each checked (loop closure, dV/dtheta = 0, and
 // stationarity and stability on the unrestricted 2n-crease problem) before it is printed.
 // --curve writes the energy and force-deflection curves (design/waterbomb/waterbomb_curve.hpp):
-// every sample checked against the general model, or nothing is written (exit 3).
+// every sample checked against the general model, or nothing is written (exit 3). Past the
+// flat state the general model continues along the one branch of the flat state's tangent
+// cone that keeps the M/V letters (waterbomb_flat_crossing.hpp): the JSON's "flat_crossing"
+// (cone lines, every branch's direction, height rate and letter check, the one taken) and a
+// text line report it; no such branch: exit 3 with that reason.
 // --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
 // every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
 // in the split fold's valid range. The split fold's switching force is the general model's
@@ -527,6 +531,27 @@ void add_waterbomb_command(CLI::App& app) {
         const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
         curve = c.samples;
         unchecked = c.unchecked;
+        // Which branch of the flat state's tangent cone the general model continued along.
+        const waterbomb::FlatCrossing& fc = c.flat_crossing;
+        nlohmann::ordered_json branches = nlohmann::ordered_json::array();
+        for (const auto& br : fc.branches) {
+          std::vector<double> dir;
+          for (int e = 0; e < 2 * a->n; ++e) dir.push_back(br.direction[e]);
+          branches.push_back({{"direction", dir},
+                              {"height_rate", br.height_rate},
+                              {"below_supports", br.far_side},
+                              {"keeps_letters", br.keeps_letters},
+                              {"first_wrong_crease", br.first_wrong_crease < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(br.first_wrong_crease)}});
+        }
+        j["flat_crossing"] = {{"system", "closure rows + rotational symmetry equalities, tangent cone at the flat state"},
+                              {"kernel_dimension", fc.kernel_dimension},
+                              {"cone_lines", fc.cone_lines},
+                              {"branches_below_supports", fc.far_side_branches},
+                              {"letter_keeping_below_supports", fc.letter_keeping},
+                              {"taken", fc.taken < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(fc.taken)},
+                              {"branches", branches}};
+        if (c.stopped_at_flat || !c.stop_message.empty())
+          throw NoAnswerError(std::string(a->curve.empty() ? "--plot" : "--curve") + ": " + c.stop_message);
       }
       const char* flag = a->curve.empty() ? "--plot" : "--curve";
       for (const auto& s : curve)
@@ -558,6 +583,16 @@ void add_waterbomb_command(CLI::App& app) {
     std::snprintf(line, sizeof line, "waterbomb base n = %d, rest theta0 = %.12g deg (gamma_m0 = %.12g, gamma_v0 = %.12g deg), k_m = %.12g, k_v = %.12g\n",
                   a->n, a->theta0_deg, to_degrees(rest.gamma_m), to_degrees(rest.gamma_v), k_m, k_v);
     std::cout << line;
+    if (j.contains("flat_crossing")) {
+      const auto& fc = j["flat_crossing"];
+      const int taken = fc["taken"].get<int>();
+      std::snprintf(line, sizeof line,
+                    "  flat crossing: tangent cone of the symmetric closure system has %d lines (%zu branches, %d below the supports, "
+                    "%d keeping the M/V letters); the curve continues along branch %d\n",
+                    fc["cone_lines"].get<int>(), fc["branches"].size(), fc["branches_below_supports"].get<int>(),
+                    fc["letter_keeping_below_supports"].get<int>(), taken);
+      std::cout << line;
+    }
     for (const auto& s : list) {
       std::snprintf(line, sizeof line, "  %-26s theta = %.12g deg  (gamma_m, gamma_v) = (%.12g, %.12g) deg  energy %.12g%s%s\n",
                     s["kind"].get<std::string>().c_str(), s["theta_deg"].get<double>(), s["gamma_m_deg"].get<double>(),
