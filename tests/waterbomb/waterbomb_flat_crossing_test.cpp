@@ -13,7 +13,12 @@
 #include "design/waterbomb/waterbomb_flat_crossing.hpp"
 #include "design/waterbomb/waterbomb_kinematics.hpp"
 #include "design/waterbomb/waterbomb_loaded_path.hpp"
+#include "design/waterbomb/waterbomb_force.hpp"
+#include "kernel/closure/closure_system.hpp"
+#include "kernel/energy/crease_stiffness.hpp"
+#include "kernel/energy/vertex_height_control.hpp"
 #include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::waterbomb {
 namespace {
@@ -83,6 +88,43 @@ TEST(WaterbombFlatCrossing, GeneralCurvePastFlatEqualsTheClosedForm) {
     // Far side of flat the force is the return branch (negative past the jump).
     EXPECT_LT(path.points[3].force, 0.0);
     EXPECT_GT(path.points[2].force, 0.0);
+  }
+}
+
+// The choice matters: leaving flat along the rejected (mirror) ray, the same loaded solve
+// lands on another equilibrium, off the closed form, with its M/V letters broken.
+TEST(WaterbombFlatCrossing, TheMirrorRayLeadsElsewhere) {
+  const int n = 4;
+  generators::WaterbombParams wp;
+  wp.n = n;
+  const CreasePattern p = generators::waterbomb_base(wp);
+  const Topology topo = build_topology(p);
+  const ClosureSystem sys(p, topo);
+  const WaterbombSprings ws = springs_at_rest_theta(n, to_radians(60.0), 1.0, 1.0);
+  const CreaseSprings springs =
+      make_crease_springs(p, stiffness_by_assignment(p, {1.0, 1.0, 0.0}), waterbomb_edge_angles(p, ws.rest));
+  VertexHeightLoad load;
+  load.vertex = 0;
+  load.support_edges = valley_creases(p);
+  const FlatCrossing c = waterbomb_flat_crossing(p, load.support_edges);
+  ASSERT_TRUE(c.continues);
+  const double r = std::cos(kPi / n), theta = to_radians(91.0);
+  load.height = r * std::cos(theta);
+  const Eigen::VectorXd closed = waterbomb_edge_angles(p, waterbomb_fold_angles(n, theta));
+  for (int i = 0; i < static_cast<int>(c.branches.size()); ++i) {
+    const FlatBranch& b = c.branches[i];
+    if (!b.far_side) continue;
+    const auto eq = vertex_height_equilibrium(p, sys, topo, springs, load,
+                                              sys.unknowns_from_edges(b.direction * (load.height / b.height_rate)));
+    ASSERT_TRUE(eq.converged);
+    const double gap = (eq.edge_angles - closed).lpNorm<Eigen::Infinity>();
+    if (i == c.taken) {
+      EXPECT_LE(gap, 1e-9);
+    } else {
+      EXPECT_GT(gap, 1e-2);
+      EXPECT_GT(eq.edge_angles[1], 0.0);  // the corner crease, M in the base, turned valley
+      EXPECT_GT(std::fabs(eq.force - waterbomb_force(ws, to_radians(60.0), r, theta).force), 1e-3);
+    }
   }
 }
 
