@@ -113,11 +113,9 @@ double element3_theta(const CorrugatedElementParams& p, double phi) {
   return element3(p, phi).theta;
 }
 
-CorrugatedElementState corrugated_element(CorrugatedElement e, const CorrugatedElementParams& p, double phi) {
-  check(p);
-  if (!(phi >= 0 && phi <= kPi)) throw std::invalid_argument("corrugated element: phi must lie in [0, pi]");
-  const Jet x(phi, 0);
-  const Dims<Jet> d = dims(e, p, x);
+namespace {
+// The state from the dimensions and their derivatives along the input (dual numbers).
+CorrugatedElementState state_of(const Dims<Jet>& d, double phi) {
   CorrugatedElementState s;
   s.phi = phi;
   s.theta = d.theta.a;
@@ -131,22 +129,19 @@ CorrugatedElementState corrugated_element(CorrugatedElement e, const CorrugatedE
   s.nu_out = -(s.dH / s.H) / (s.dW / s.W);
   return s;
 }
+}  // namespace
+
+CorrugatedElementState corrugated_element(CorrugatedElement e, const CorrugatedElementParams& p, double phi) {
+  check(p);
+  if (!(phi >= 0 && phi <= kPi)) throw std::invalid_argument("corrugated element: phi must lie in [0, pi]");
+  return state_of(dims(e, p, Jet(phi, 0)), phi);
+}
 
 CorrugatedElementState corrugated_element3_at_theta(const CorrugatedElementParams& p, double theta) {
   check(p);
   if (!(theta >= 0 && theta <= kPi)) throw std::invalid_argument("corrugated element: theta must lie in [0, pi]");
-  const Dims<Jet> d = element3_at(p, Jet(theta, 0));
-  CorrugatedElementState s;
-  s.phi = NAN;
+  CorrugatedElementState s = state_of(element3_at(p, Jet(theta, 0)), NAN);
   s.theta = theta;
-  s.W = d.W.a;
-  s.L = d.L.a;
-  s.H = d.H.a;
-  s.dW = d.W.v[0];
-  s.dL = d.L.v[0];
-  s.dH = d.H.v[0];
-  s.nu_in = -(s.dL / s.L) / (s.dW / s.W);
-  s.nu_out = -(s.dH / s.H) / (s.dW / s.W);
   return s;
 }
 
