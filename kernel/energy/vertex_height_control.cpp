@@ -140,6 +140,27 @@ void assemble_kkt(const LoadSetup& st, const ClosureSystem& system, const Topolo
 
 }  // namespace
 
+namespace {
+
+Eigen::Vector3d start_normal(const LoadSetup& st, const FanGeometry& g, double height) {
+  const Eigen::Vector3d mean = g.mean_normal.normalized();
+  if (st.ns < 3) return mean;
+  Eigen::MatrixXd P(st.ns, 3);
+  for (int s = 0; s < st.ns; ++s) P.row(s) = st.length[s] * g.axis[st.support_slot[s]].transpose();
+  const Eigen::RowVector3d centre = P.colwise().mean();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(P.rowwise() - centre, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  if (!(sv[1] > 1e-9 * sv[0])) return mean;  // the ends are collinear: no plane
+  Eigen::Vector3d nu = svd.matrixV().col(2);
+  if (nu.dot(mean) < 0.0) nu = -nu;
+  // The start's height with nu is -nu . centre; flip when -nu puts it closer to `height`.
+  const double own = -centre.dot(nu);
+  if (std::fabs(-own - height) < std::fabs(own - height) - 1e-12 * std::max(1.0, std::fabs(height))) nu = -nu;
+  return nu;
+}
+
+}  // namespace
+
 HeightControlKkt height_control_kkt(const CreasePattern& pattern, const ClosureSystem& system, const Topology& topology,
                                    const CreaseSprings& springs, const VertexHeightLoad& load, const Eigen::VectorXd& x,
                                    const Eigen::Vector3d& nu, const Eigen::VectorXd& multipliers) {
@@ -162,7 +183,12 @@ HeightControlledEquilibrium vertex_height_equilibrium(const CreasePattern& patte
 
   HeightControlledEquilibrium out;
   Eigen::VectorXd x = x0;
-  Eigen::Vector3d nu = fan_geometry(fan, system.edges_from_unknowns(x)).mean_normal.normalized();
+  // Start normal: the plane through the supports' far ends at x0, on the side that puts the
+  // start's own height closest to the prescribed one (ties: the mean face normal's side). The
+  // mean face normal alone can point far from the support plane's normal, even flip, when
+  // big facets are folded nearly shut (split fold, n = 3, b > 44 deg near theta_max): Newton
+  // then had to turn nu by ~pi and wandered off the solution.
+  Eigen::Vector3d nu = start_normal(st, fan_geometry(fan, system.edges_from_unknowns(x)), load.height);
   Eigen::VectorXd w = Eigen::VectorXd::Zero(M);  // (lambda, mu, kappa)
 
   HeightControlKkt kkt;

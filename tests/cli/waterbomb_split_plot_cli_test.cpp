@@ -98,7 +98,8 @@ TEST(WaterbombSplitCli, PlotWritesCsvJsonAndPng) {
     const std::string png = read(out / "waterbomb.png");
     ASSERT_GT(png.size(), 1000u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
-    const auto json = test::run_command(test::cli() + flags + " --json");
+    // With a curve the document also says how the curve crossed flat ("flat_crossing", plain base).
+    const auto json = test::run_command(test::cli() + flags + " --samples 31 --curve " + (dir / "json_run.csv").string() + " --json");
     ASSERT_EQ(json.status, 0);
     auto strip = [](nlohmann::json j) {
       j.erase("provenance");
