@@ -12,6 +12,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/length_scale.hpp"
 #include "kernel/solve/continuation.hpp"
+#include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/rank.hpp"
 #include "kernel/thick/hinge_heights.hpp"
 
@@ -143,22 +144,18 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
                     "), so the flat state is isolated";
     return report;
   }
-  if (dof > 1) {
-    report.verdict = "undecided";
-    report.reason = "DOF " + std::to_string(dof) + " at the flat state (first order; a singular point is inconclusive): not traced";
-    return report;
-  }
-
-  // The tangent at flat picks the default drive (the hinge that moves most) and the direction.
+  // The tangent (DOF 1) or the null space (DOF > 1: a singular flat state, first order is
+  // inconclusive) picks the default drive: the hinge that moves most.
+  const bool singular = dof > 1;
   const Eigen::VectorXd x0 = system.unknowns_from_edges(sheet.reference_edge_angles);
-  const Eigen::VectorXd tangent = report.mobility.rank.null_space.col(0);
+  const Eigen::MatrixXd& null_space = report.mobility.rank.null_space;
   int drive = request.drive.value_or(-1);
   if (drive < 0) {
     double best = -1.0;
     for (int e = 0; e < ext.hinges; ++e) {
       const int u = system.unknown_of_edge(e);
-      if (u >= 0 && std::abs(tangent[u]) > best + 1e-12) {
-        best = std::abs(tangent[u]);
+      if (u >= 0 && null_space.row(u).norm() > best + 1e-12) {
+        best = null_space.row(u).norm();
         drive = e;
       }
     }
@@ -167,29 +164,16 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
   const int du = system.unknown_of_edge(drive);
   const Assignment letter = pattern.assignments[drive];
   report.target = request.to.value_or(letter == Assignment::Mountain ? -to_radians(170.0) : to_radians(170.0));
-  if (std::abs(tangent[du]) <= 1e-9 * tangent.cwiseAbs().maxCoeff()) {
+  if (null_space.row(du).norm() <= 1e-9) {
     report.verdict = "undecided";
-    report.reason = "DOF 1 at the flat state, but hinge " + std::to_string(drive) + " does not move along it to first order: not traced";
+    report.reason = "DOF " + std::to_string(dof) + " at the flat state, but hinge " + std::to_string(drive) +
+                    " does not move along it to first order: not traced";
     return report;
   }
   const double sign = report.target > 0 ? 1.0 : -1.0;
   const double ref = x0[du];
-
-  ContinuationOptions options;
-  options.tolerance = std::min(1e-12, request.closure_tolerance);
-  options.max_points = request.max_points;
-  options.landing_unknown = du;
-  for (int k = 1; k <= request.steps; ++k) options.landing_values.push_back(ref + report.target * k / request.steps);
-  Eigen::VectorXd direction = Eigen::VectorXd::Zero(system.num_unknowns());
-  direction[du] = sign;
   std::string stop_why;
-  auto stop = [&](const Eigen::VectorXd& x) {
-    const double moved = sign * (x[du] - ref);
-    if (moved >= std::abs(report.target) - 1e-12) return true;
-    if (moved < -1e-9) {
-      stop_why = "the drive turned back past the flat state (a fold limit)";
-      return true;
-    }
+  auto beyond_pi = [&](const Eigen::VectorXd& x) {
     for (int e = 0; e < ext.hinges; ++e) {
       const int u = system.unknown_of_edge(e);
       if (u >= 0 && std::abs(x[u] - sheet.reference_edge_angles[e]) >= kPi) {
@@ -199,35 +183,106 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
     }
     return false;
   };
-  const ContinuationResult trace = continue_one_dof(system, x0, direction, stop, options);
-  report.continuation_points = static_cast<int>(trace.points.size());
-  int landed_last = -1;
-  for (const ContinuationPoint& point : trace.points) {
-    if (point.landing < 0 || point.landing <= landed_last) continue;
+  auto add_step = [&](const Eigen::VectorXd& x, double goal) {
     ThickCheckStep step;
-    step.residual = system.residual(point.x).cwiseAbs().maxCoeff();
+    step.residual = system.residual(x).cwiseAbs().maxCoeff();
     if (!(step.residual <= request.closure_tolerance)) {
-      stop_why = "the step at " + num(to_degrees(options.landing_values[point.landing] - ref)) + " deg closes only to " +
-                 num(step.residual);
-      break;
+      stop_why = "the step at " + num(to_degrees(goal - ref)) + " deg closes only to " + num(step.residual);
+      return false;
     }
-    step.rho = sheet.fold_angles(system.edges_from_unknowns(point.x));
+    step.rho = sheet.fold_angles(system.edges_from_unknowns(x));
     step.drive = step.rho[drive];
-    step.dof = dof_at(system, point.x);
+    step.dof = dof_at(system, x);
     report.max_residual = std::max(report.max_residual, step.residual);
     report.steps.push_back(std::move(step));
-    landed_last = point.landing;
+    return true;
+  };
+
+  if (!singular) {
+    // A regular flat state: 1-DOF pseudo-arclength continuation, landing on the steps.
+    ContinuationOptions options;
+    options.tolerance = std::min(1e-12, request.closure_tolerance);
+    options.max_points = request.max_points;
+    options.landing_unknown = du;
+    for (int k = 1; k <= request.steps; ++k) options.landing_values.push_back(ref + report.target * k / request.steps);
+    Eigen::VectorXd direction = Eigen::VectorXd::Zero(system.num_unknowns());
+    direction[du] = sign;
+    auto stop = [&](const Eigen::VectorXd& x) {
+      const double moved = sign * (x[du] - ref);
+      if (moved >= std::abs(report.target) - 1e-12) return true;
+      if (moved < -1e-9) {
+        stop_why = "the drive turned back past the flat state (a fold limit)";
+        return true;
+      }
+      return beyond_pi(x);
+    };
+    const ContinuationResult trace = continue_one_dof(system, x0, direction, stop, options);
+    report.continuation_points = static_cast<int>(trace.points.size());
+    int landed_last = -1;
+    for (const ContinuationPoint& point : trace.points) {
+      if (point.landing < 0 || point.landing <= landed_last) continue;
+      if (!add_step(point.x, options.landing_values[point.landing])) break;
+      landed_last = point.landing;
+    }
+    if (stop_why.empty() && landed_last != request.steps - 1) stop_why = trace.reason;
+  } else {
+    // A singular flat state: projected driving - the drive held at each sub-step (8 per step)
+    // and every other hinge Newton-projected from the secant predictor. Each point closes to
+    // the tolerance, so the points reached are states of the thick sheet; a sub-step that moves
+    // any hinge by more than 0.25 rad is taken as a jump between branches and ends the trace.
+    NewtonOptions newton;
+    newton.tolerance = std::min(1e-12, request.closure_tolerance);
+    newton.held_unknowns = {du};
+    // Where the flat state branches, the letters pick the branch: projected Gauss-Newton keeps
+    // each M hinge <= 0 and V hinge >= 0 (hinges whose sheet reference angle is 0 only; the
+    // bound acts on the sheet's own fold angle).
+    newton.sign_bounds.assign(system.num_unknowns(), 0);
+    for (int e = 0; e < ext.hinges; ++e) {
+      const int u = system.unknown_of_edge(e);
+      if (u < 0 || u == du || std::abs(sheet.reference_edge_angles[e]) > 1e-12) continue;
+      if (pattern.assignments[e] == Assignment::Valley) newton.sign_bounds[u] = 1;
+      if (pattern.assignments[e] == Assignment::Mountain) newton.sign_bounds[u] = -1;
+    }
+    const int sub = 8;
+    Eigen::VectorXd x = x0, previous = x0;
+    for (int k = 1; k <= request.steps && stop_why.empty(); ++k) {
+      for (int s = 1; s <= sub && stop_why.empty(); ++s) {
+        const double goal = ref + report.target * ((k - 1) * sub + s) / (static_cast<double>(request.steps) * sub);
+        Eigen::VectorXd guess = (k == 1 && s == 1) ? x : Eigen::VectorXd(2 * x - previous);
+        guess[du] = goal;
+        const NewtonResult r = newton_project(system, guess, newton);
+        ++report.continuation_points;
+        if (!r.converged) {
+          stop_why = "Newton did not close the sheet at " + num(to_degrees(goal - ref)) + " deg of the drive";
+        } else if ((r.x - x).cwiseAbs().maxCoeff() > 0.25) {
+          stop_why = "a sub-step at " + num(to_degrees(goal - ref)) + " deg jumped (a hinge moved by more than 0.25 rad)";
+        } else if (!beyond_pi(r.x)) {
+          previous = x;
+          x = r.x;
+          if (s == sub) add_step(x, goal);
+        }
+      }
+    }
   }
-  const bool reached = landed_last == request.steps - 1;
+
+  if (!report.steps.empty())
+    for (int e = 0; e < ext.hinges; ++e) {
+      const double rho = report.steps.back().rho[e];
+      const Assignment letter_e = pattern.assignments[e];
+      report.letter_disagreements += (letter_e == Assignment::Valley && rho < -1e-9) || (letter_e == Assignment::Mountain && rho > 1e-9);
+    }
+  const bool reached = static_cast<int>(report.steps.size()) == request.steps;
+  const std::string how = singular ? "projected driving from the singular flat state (DOF " + std::to_string(dof) + " to first order)"
+                                   : "continuation from the flat state (DOF 1)";
   if (reached) {
     report.verdict = "mobile";
-    report.reason = "DOF 1 at the flat state; traced to " + num(to_degrees(report.target)) + " deg of hinge " +
-                    std::to_string(drive) + " in " + std::to_string(report.steps.size()) + " steps";
+    report.reason = "traced by " + how + " to " + num(to_degrees(report.target)) + " deg of hinge " + std::to_string(drive) + " in " +
+                    std::to_string(report.steps.size()) + " steps, every step closed to " + num(request.closure_tolerance);
   } else {
     report.verdict = "undecided";
-    report.trace_note = "trace ended after " + std::to_string(report.steps.size()) + " of " + std::to_string(request.steps) + " steps: " +
-                        (stop_why.empty() ? trace.reason : stop_why);
-    report.reason = "DOF 1 at the flat state, but the thick motion was not traced to the target (" + report.trace_note + ")";
+    report.trace_note = "trace ended after " + std::to_string(report.steps.size()) + " of " + std::to_string(request.steps) +
+                        " steps: " + stop_why;
+    report.reason = "the thick motion was not traced to the target by " + how + " (" + report.trace_note + ")";
   }
   return report;
 }
@@ -268,6 +323,7 @@ nlohmann::ordered_json thick_check_json(const CreasePattern& p, const ThickCheck
   }
   trace["dof_min"] = min_dof >= 0 ? nlohmann::ordered_json(min_dof) : nlohmann::ordered_json();
   trace["dof_max"] = max_dof >= 0 ? nlohmann::ordered_json(max_dof) : nlohmann::ordered_json();
+  trace["letter_disagreements_at_end"] = r.letter_disagreements;
   if (!r.trace_note.empty()) trace["note"] = r.trace_note;
   if (with_steps) {
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
@@ -295,8 +351,10 @@ std::string thick_check_text(const CreasePattern& p, const ThickCheckReport& r, 
   if (!r.steps.empty()) {
     int max_dof = 0;
     for (const ThickCheckStep& s : r.steps) max_dof = std::max(max_dof, s.dof);
-    std::snprintf(line, sizeof line, "  trace: hinge %d to %.6g deg in %zu steps (%d continuation points), closure <= %.3g rad, DOF <= %d\n",
-                  r.drive, to_degrees(r.steps.back().drive), r.steps.size(), r.continuation_points, r.max_residual, max_dof);
+    std::snprintf(line, sizeof line,
+                  "  trace: hinge %d to %.6g deg in %zu steps (%d points), closure <= %.3g rad, DOF <= %d, %d hinge(s) against their letter at the end\n",
+                  r.drive, to_degrees(r.steps.back().drive), r.steps.size(), r.continuation_points, r.max_residual, max_dof,
+                  r.letter_disagreements);
     out += line;
   }
   if (with_steps)

@@ -7,7 +7,7 @@
 //                              0..H-1 (the flat pattern's edges), null for the cut edges after them.
 // is answered with the thick model: the sheet's ClosureSystem with every hole closed in SE(3)
 // (one loop per thick vertex), its first-order DOF at the flat state (thick_mobility), and the
-// thick motion traced from flat by 1-DOF pseudo-arclength continuation (continue_one_dof).
+// thick motion traced from flat (see Verdict).
 // One decision for both commands, here; the app only prints.
 //
 // Inputs: a pattern as read (complete_and_validate'd) and its topology; ThickCheckRequest.
@@ -21,13 +21,20 @@
 // Verdict (ThickCheckReport::verdict):
 //   "rigid":     DOF 0 at the flat state - the closure map is injective to first order there,
 //                so the flat state is an isolated solution (a proof, at the stated rank cut);
-//   "mobile":    DOF 1 at the flat state and the continuation reached the target drive angle,
-//                every landed step closing to closure_tolerance (a certificate);
-//   "undecided": DOF > 1 at the flat state (first order is inconclusive: a singular point), or
-//                the trace stopped before the target (a bifurcation, a fold limit or a hinge at
-//                +-pi; trace_note says which) - the steps reached are still reported.
-// Cost: one rank of the flat Jacobian, one rank per hole, and at most max_points continuation
-// points (each a dense SVD up to 2000 unknowns).
+//   "mobile":    the drive reached the target, every landed step closing to closure_tolerance
+//                (a certificate). From a regular flat state (DOF 1): 1-DOF pseudo-arclength
+//                continuation. From a singular one (DOF > 1 to first order, e.g. the flat state of
+//                Bricard loops, where first order is inconclusive): projected driving - the drive
+//                held at 8 sub-steps per step, the rest Newton-projected from a secant
+//                predictor, each M hinge kept <= 0 and V hinge >= 0 (projected Gauss-Newton:
+//                the letters pick the branch); a sub-step moving any hinge by > 0.25 rad counts as a jump and ends
+//                the trace. Each step's first-order DOF is reported (ThickCheckStep::dof);
+//   "undecided": the trace stopped before the target (Newton failed, a jump, a fold limit, a
+//                hinge at +-pi, continuation failed; trace_note says which) or the drive does
+//                not move to first order - the steps reached are still reported.
+// Cost: one rank of the flat Jacobian, one rank per hole, one rank per landed step, and at most
+// max_points continuation points (each a dense SVD up to 2000 unknowns) or 8 Newton
+// projections per step.
 //
 // Units: angles in radians (fold angles from the flat state, FOLD sign); lengths in the
 // pattern's internal units (to_file_units to print).
@@ -47,7 +54,7 @@ namespace rigidfold {
 bool is_thick_fold(const CreasePattern& pattern);
 
 struct ThickCheckRequest {
-  std::optional<int> drive;            // hinge edge; default: the hinge that moves most along the flat state's tangent
+  std::optional<int> drive;            // hinge edge; default: the hinge that moves most in the flat state's null space
   std::optional<double> to;            // target drive angle (radians, 0 < |to| <= pi); default 170 deg, towards the drive's letter (V: +, M: -, else +)
   int steps = 17;                      // landed steps at to * k / steps, k = 1..steps
   double closure_tolerance = 1e-10;    // every reported step closes to this (radians)
@@ -74,9 +81,13 @@ struct ThickCheckReport {
   int drive = -1;
   double target = 0.0;                 // radians
   std::vector<ThickCheckStep> steps;   // landed steps reached, in order
-  int continuation_points = 0;
+  int continuation_points = 0;        // continuation points, or Newton projections (projected driving)
   double max_residual = 0.0;           // over steps
   std::string trace_note;              // where and why the trace ended early (empty if it reached the target)
+  // M/V hinges folded against their letter (|rho| > 1e-9 with the wrong sign) at the last step
+  // reached (0 if none): the thick model's motion does not use the letters except to pick the
+  // branch at a singular flat state, so a traced branch may go against them.
+  int letter_disagreements = 0;
 };
 
 ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topology, const ThickCheckRequest& request = {});

@@ -233,8 +233,10 @@ TEST(DiamondArch, ThickArchIsTracedWithOneDofOnTheZeroThicknessMotionAndCurves) 
 // data/thick/diamond_arch_6_a30_thick.fold is this test's thick sheet (t1 = 0.03, t2 = 0.02) written
 // as a thick FOLD (rigidfold:thickness per face, rigidfold:hinge_heights per edge), for
 // `rigidfold check/trace`. It must stay what the generator builds, and thick_check must read it
-// as the same sheet: its flat state is singular (first-order DOF above 1, the six Bricard loops'
-// flat bifurcation), so check answers "undecided" there; the folded states above have DOF 1.
+// as the same sheet: its flat state is singular (first-order DOF above 1: the Bricard loops
+// branch there), so thick_check traces by projected driving; every state it reports must close
+// and have DOF 1. (Which branch it follows from flat is not asserted: from this singular point
+// it leaves the symmetric motion, which the trace above follows from a folded start.)
 TEST(DiamondArch, BundledThickFoldIsTheGeneratorsSheet) {
   const generators::DiamondArchParams params = arch_params();
   const CreasePattern flat = generators::diamond_arch(params);
@@ -255,11 +257,18 @@ TEST(DiamondArch, BundledThickFoldIsTheGeneratorsSheet) {
   const ThickMobilityReport m = thick_mobility(sheet, Eigen::VectorXd::Zero(flat.num_edges()), {}, 1e-12);
   EXPECT_EQ(r.mobility.dof, m.dof);
   EXPECT_GT(m.dof, 1);
-  EXPECT_EQ(r.verdict, "undecided");
+  EXPECT_EQ(r.verdict, "mobile");
+  ASSERT_EQ(static_cast<int>(r.steps.size()), ThickCheckRequest{}.steps);
+  for (const ThickCheckStep& s : r.steps) {
+    EXPECT_LE(s.residual, 1e-10);
+    EXPECT_EQ(s.dof, 1) << "drive " << s.drive;
+  }
   EXPECT_NEAR(r.min_thickness * std::ldexp(1.0, file.length_exponent), 0.02, 1e-15);
   EXPECT_NEAR(r.max_thickness * std::ldexp(1.0, file.length_exponent), 0.05, 1e-15);
-  std::printf("bundled thick arch: flat-state first-order DOF %d (file) / %d (built), smallest kept singular value %.2e\n",
-              r.mobility.dof, m.dof, m.rank.sigma_kept);
+  std::printf("bundled thick arch: flat-state first-order DOF %d (file) / %d (built), smallest kept singular value %.2e; "
+              "thick_check: %s, %zu steps to %.1f deg, %d hinge(s) against their letter at the end\n",
+              r.mobility.dof, m.dof, m.rank.sigma_kept, r.verdict.c_str(), r.steps.size(), r.steps.back().drive * 180 / kPi,
+              r.letter_disagreements);
 }
 
 }  // namespace
