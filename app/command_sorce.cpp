@@ -151,7 +151,7 @@ std::vector<Polygon3> placed_panels(const std::vector<PanelSolid>& solids, const
 void add_sorce_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("sorce", "SORCE rolling-contact joints for thick panels (seed 002) on the traced folding path");
   struct Args {
-    std::string pattern, offsets = "linear", out;
+    std::string pattern, offsets = "linear", out, parameter = "drive";
     double thickness = 0, epsilon = 0, max_protrusion = -1, max_s0 = -1, to = 0, at = -1;
     int drive = -1, steps = 40, samples = 201;
     std::vector<int> circular;
@@ -185,6 +185,10 @@ void add_sorce_command(CLI::App& app) {
                              "+-180 for joints that reach the flat-folded state)")
                  ->check(finite_in(-180, 180, "degrees"));
   cmd->add_option("--steps", a->steps, "traced steps (8..2000; the path is a quintic spline through them)")->check(CLI::Range(8, 2000));
+  cmd->add_option("--parameter", a->parameter,
+                  "the path's parameter t: drive (t = drive / final drive; default), arc-length (t = arc length in "
+                  "fold-angle space / total) or half-tangent (tan(pi t/2) ~ geometric mean of |tan(rho/2)|, the seed's "
+                  "eq 35 on one vertex); sorce_path_spline.hpp");
   cmd->add_option("--at", a->at, "with --out: also write the panels placed at this t (0..1) as panels_at.stl")
       ->check(finite_in(0, 1));
   cmd->add_option("--samples", a->samples, "points per profile in the drawings and solids (8..20000)")->check(CLI::Range(8, 20000));
@@ -237,6 +241,10 @@ void add_sorce_command(CLI::App& app) {
     }
     rq.sorce.trace.steps = a->steps;
     rq.sorce.trace.force_general = a->general;
+    if (a->parameter == "arc-length") rq.sorce.path_parameter = PathParameter::kArcLength;
+    else if (a->parameter == "half-tangent") rq.sorce.path_parameter = PathParameter::kHalfTangent;
+    else if (a->parameter != "drive")
+      throw InputError("--parameter", "must be drive, arc-length or half-tangent, not '" + a->parameter + "'");
     rq.sorce.pose_times = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
     if (a->at >= 0 && std::find(rq.sorce.pose_times.begin(), rq.sorce.pose_times.end(), a->at) == rq.sorce.pose_times.end()) {
       rq.sorce.pose_times.push_back(a->at);
@@ -278,8 +286,15 @@ void add_sorce_command(CLI::App& app) {
     path["model"] = d.model;
     path["driving_crease"] = s.path.drive;
     path["final_drive_deg"] = to_degrees(s.path.final_drive);
+    path["parameter"] = to_string(s.path.parameter);
+    path["arc_length_deg"] = to_degrees(s.path.arc_length);
     path["knots"] = s.path.knots.size();
-    path["parameter"] = "t = drive / final drive, quintic spline per crease";
+    path["parameter_definition"] = s.path.parameter == PathParameter::kArcLength
+                                       ? "t = arc length in fold-angle space / total, quintic spline per crease"
+                                       : s.path.parameter == PathParameter::kHalfTangent
+                                             ? "tan(pi t/2) ~ geometric mean of |tan(rho/2)| over folding creases "
+                                               "(seed eq 35 on one vertex), quintic spline per crease"
+                                             : "t = drive / final drive, quintic spline per crease";
     j["path"] = path;
     Json faces = Json::array();
     for (std::size_t f = 0; f < s.faces.size(); ++f)

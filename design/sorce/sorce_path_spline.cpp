@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -109,7 +110,63 @@ ScalarFunction quintic_spline(const std::vector<double>& values) {
   };
 }
 
-PathSpline path_spline(const MotionBranch& branch, int num_edges) {
+const char* to_string(PathParameter p) {
+  switch (p) {
+    case PathParameter::kArcLength: return "arc_length";
+    case PathParameter::kHalfTangent: return "half_tangent";
+    default: return "drive";
+  }
+}
+
+namespace {
+
+// g(tau) = ||rho'(tau)|| over all edges, and its integral by 8-point Gauss-Legendre on [a, b]
+// (inside one knot interval the splines are polynomials, so g is smooth there).
+double speed(const std::vector<ScalarFunction>& rho, double tau) {
+  double s = 0.0;
+  for (const ScalarFunction& f : rho) {
+    const double d = f(tau)[1];
+    s += d * d;
+  }
+  return std::sqrt(s);
+}
+
+double speed_integral(const std::vector<ScalarFunction>& rho, double a, double b) {
+  static constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  static constexpr double kW[4] = {0.3626837833783620, 0.3137066278886872, 0.2223810344533745, 0.1012285362903763};
+  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  double s = 0.0;
+  for (int i = 0; i < 4; ++i) s += kW[i] * (speed(rho, c - h * kX[i]) + speed(rho, c + h * kX[i]));
+  return s * h;
+}
+
+// Root of the increasing f on [lo, hi] with f(lo) <= target <= f(hi): Newton steps kept inside
+// the bracket (bisection when a step leaves it).
+template <class F, class D>
+double solve_increasing(F f, D df, double target, double lo, double hi) {
+  double x = 0.5 * (lo + hi);
+  for (int it = 0; it < 100; ++it) {
+    const double r = f(x) - target;
+    if (r == 0.0) return x;
+    (r > 0.0 ? hi : lo) = x;
+    const double d = df(x);
+    double next = d > 0.0 ? x - r / d : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - x) <= 1e-16 * std::max(1.0, std::abs(x))) return next;
+    x = next;
+  }
+  return x;
+}
+
+// f(tau(t)) with its first three derivatives in t (chain rule).
+Jet compose(const Jet& f, const Jet& tau) {
+  return {f[0], f[1] * tau[1], f[2] * tau[1] * tau[1] + f[1] * tau[2],
+          f[3] * tau[1] * tau[1] * tau[1] + 3.0 * f[2] * tau[1] * tau[2] + f[1] * tau[3]};
+}
+
+}  // namespace
+
+PathSpline path_spline(const MotionBranch& branch, int num_edges, PathParameter parameter) {
   if (!branch.traced) throw InputError("branch", "not traced: " + branch.message);
   const int steps = static_cast<int>(branch.steps.size());
   if (steps < 7) throw InputError("branch", "needs at least 7 traced steps for a C^3 path (has " +
@@ -136,6 +193,78 @@ PathSpline path_spline(const MotionBranch& branch, int num_edges) {
   for (int e = 0; e < num_edges; ++e) {
     const Eigen::VectorXd row = path.samples.row(e).transpose();
     path.rho.push_back(quintic_spline(std::vector<double>(row.data(), row.data() + row.size())));
+  }
+  path.parameter = parameter;
+  // Arc length by the drive parameter tau (knots tau_k = k / steps).
+  std::vector<double> cumulative(steps + 1, 0.0);
+  for (int k = 0; k < steps; ++k)
+    cumulative[k + 1] = cumulative[k] + speed_integral(path.rho, path.knots[k], path.knots[k + 1]);
+  path.arc_length = cumulative[steps];
+  if (parameter == PathParameter::kDrive) return path;
+
+  const std::vector<ScalarFunction> by_drive = path.rho;
+  // h(tau): the new parameter as a function of the drive parameter, increasing from 0 to 1.
+  std::function<double(double)> h;
+  if (parameter == PathParameter::kArcLength) {
+    for (int k = 0; k <= 20 * steps; ++k)
+      if (!(speed(path.rho, static_cast<double>(k) / (20 * steps)) > 1e-9 * path.arc_length))
+        throw InputError("branch", "the path stops (||rho'|| = 0) near drive fraction " +
+                                       std::to_string(static_cast<double>(k) / (20 * steps)) + ": no arc-length parameter");
+    h = [&](double tau) {
+      const int k = std::clamp(static_cast<int>(std::floor(tau * steps)), 0, steps - 1);
+      return (cumulative[k] + speed_integral(by_drive, path.knots[k], tau)) / path.arc_length;
+    };
+  } else {
+    std::vector<int> folding;
+    for (int e = 0; e < num_edges; ++e)
+      if (path.samples.row(e).cwiseAbs().maxCoeff() > 1e-9) folding.push_back(e);
+    if (folding.empty()) throw InputError("branch", "no crease folds: no half-tangent parameter");
+    auto mean_log = [folding, &by_drive](double tau) {
+      double s = 0.0;
+      for (int e : folding) s += std::log(std::abs(std::tan(0.5 * by_drive[e](tau)[0])));
+      return s / static_cast<double>(folding.size());
+    };
+    const double end = std::atan(std::exp(mean_log(1.0)));
+    h = [mean_log, end](double tau) { return tau <= 0.0 ? 0.0 : std::atan(std::exp(mean_log(tau))) / end; };
+  }
+  for (int k = 1; k <= 20 * steps; ++k) {
+    const double a = h(static_cast<double>(k - 1) / (20 * steps)), b = h(static_cast<double>(k) / (20 * steps));
+    if (!(b > a) || !std::isfinite(b))
+      throw InputError("branch", std::string("the ") + to_string(parameter) +
+                                     " parameter does not increase along the path near drive fraction " +
+                                     std::to_string(static_cast<double>(k) / (20 * steps)) +
+                                     " (a crease stops or turns back): use the drive parameter");
+  }
+  // tau at equal steps of the new parameter (bisection: h is increasing), then tau(t) as a
+  // quintic spline through them.
+  std::vector<double> tau(steps + 1, 0.0);
+  tau[steps] = 1.0;
+  for (int j = 1; j < steps; ++j) {
+    const double target = static_cast<double>(j) / steps;
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (h(mid) < target ? lo : hi) = mid;
+    }
+    tau[j] = 0.5 * (lo + hi);
+  }
+  const ScalarFunction tau_of_t = quintic_spline(tau);
+  for (int k = 0; k <= 20 * steps; ++k)
+    if (!(tau_of_t(static_cast<double>(k) / (20 * steps))[1] > 0.0))
+      throw InputError("branch", "the arc-length parameter is not monotone (spline of tau(t))");
+  // Knots: the t where tau(t) is each sample's drive parameter, so rho(t_k) = the samples.
+  std::vector<double> knots(steps + 1, 0.0);
+  knots[steps] = 1.0;
+  for (int k = 1; k < steps; ++k)
+    knots[k] = solve_increasing([&](double t) { return tau_of_t(t)[0]; }, [&](double t) { return tau_of_t(t)[1]; },
+                                path.knots[k], 0.0, 1.0);
+  path.knots = knots;
+  for (int e = 0; e < num_edges; ++e) {
+    const ScalarFunction f = by_drive[e];
+    path.rho[e] = [f, tau_of_t](double t) {
+      const Jet tau_jet = tau_of_t(t);
+      return compose(f(tau_jet[0]), tau_jet);
+    };
   }
   return path;
 }

@@ -276,13 +276,13 @@ PatternSorce pattern_sorce(const CreasePattern& pattern, const PatternSorceReque
   PatternSorce out;
   // The path.
   if (request.branch) {
-    out.path = path_spline(*request.branch, ne);
+    out.path = path_spline(*request.branch, ne, request.path_parameter);
   } else {
     TraceRequest trace = request.trace;
     trace.force_general = true;
     const MotionTrace m = trace_motion(pattern, topology, trace);
     if (m.branches.empty()) throw InputError("branch", "nothing traced: " + m.note);
-    out.path = path_spline(m.branches[0], ne);
+    out.path = path_spline(m.branches[0], ne, request.path_parameter);
   }
   const PathSpline& path = out.path;
   const int knots = static_cast<int>(path.knots.size());

@@ -50,6 +50,9 @@ struct PatternSorceRequest {
   // of pi on patterns whose creases all reach pi together (Miura), exactly at pi on one vertex.
   std::optional<MotionBranch> branch;
   TraceRequest trace;
+  // The path's parameter t (sorce_path_spline.hpp). The offsets z_f(t) are functions of it, so
+  // it decides which offsets the linear and basis families (and the optimiser) can reach.
+  PathParameter path_parameter = PathParameter::kDrive;
   double thickness = 0.0;               // every panel (> 0) unless face_thickness is given
   std::vector<double> face_thickness;   // empty, or one per face (> 0)
   std::vector<double> end_offsets;      // empty (derived, see above), or z_f(1) per face
