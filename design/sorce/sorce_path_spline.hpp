@@ -46,7 +46,8 @@ ScalarFunction quintic_spline(const std::vector<double>& values);
 //              this is exactly the seed's eq 35 parameter: the major folds' half tangents are
 //              sqrt(mu) tan(pi t/2), the minor ones tan(pi t/2)/sqrt(mu), so every fold's rate
 //              is finite and non-zero at both ends, minor and major swapping roles at t = 1.
-//              Needs every folding crease's |rho| increasing (else InputError("branch")).
+//              Needs that mean to increase along the path (else InputError("branch")): a
+//              crease that turns back or ends flat may break it.
 enum class PathParameter { kDrive, kArcLength, kHalfTangent };
 const char* to_string(PathParameter p);  // "drive", "arc_length", "half_tangent"
 

@@ -115,6 +115,26 @@ TEST(SorceCli, CircularCreaseHasConvexityTwoOverThickness) {
   }
 }
 
+// --parameter: vertex A on the half-tangent (seed eq 35) and arc-length parameters passes the
+// same checks, the JSON names the parameter, and the path's length in fold-angle space does not
+// depend on the parameter.
+TEST(SorceCli, PathParametersPassTheChecks) {
+  double length = 0.0;
+  for (const std::string name : {"drive", "arc-length", "half-tangent"}) {
+    const auto r = test::run_command(test::cli() + " sorce " + kSource + "data/sorce/vertex_a.fold --thickness 0.1 --drive 1 --to 180 --parameter " + name + " --json");
+    ASSERT_EQ(r.status, 0) << name << "\n" << r.err;
+    const auto j = nlohmann::ordered_json::parse(r.out);
+    std::string expected = name;
+    std::replace(expected.begin(), expected.end(), '-', '_');
+    EXPECT_EQ(j["path"]["parameter"], expected);
+    for (const auto& [check, bound] : j["check_bounds"].items())
+      EXPECT_LE(j["checks"][check].get<double>(), bound.get<double>()) << name << " " << check;
+    const double l = j["path"]["arc_length_deg"].get<double>();
+    if (length == 0.0) length = l;
+    EXPECT_NEAR(l, length, 1e-9 * length) << name;
+  }
+}
+
 TEST(SorceCli, OptimizeReportsItsSearch) {
   const fs::path pattern = scratch("m23.fold");
   ASSERT_EQ(test::run_command(test::cli() + " generate miura --rows 2 --cols 3 --out " + pattern.string()).status, 0);
@@ -166,6 +186,7 @@ TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
       {kMiura + " --thickness 0.05 --drive 999", "--drive"},
       {kMiura + " --thickness 0.05 --steps 3", "--steps"},
       {kMiura + " --thickness 0.05 --to 0", "--to"},
+      {kMiura + " --thickness 0.05 --parameter arclength", "--parameter"},
       {kMiura + " --thickness 0.05 --offsets " + spec("a.json", "{\"end_offset\": []}") + " --out " + out.string(), "a.json: /end_offset"},
       {kMiura + " --thickness 0.05 --offsets " + spec("b.json", "{\"end_offsets\": [1, 2]}") + " --out " + out.string(), "b.json: /end_offsets"},
       {kMiura + " --thickness 0.05 --offsets " + spec("c.json", "{\"coefficients\": [[1, \"x\"]]}"), "c.json: /coefficients"},
