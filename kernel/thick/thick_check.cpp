@@ -278,6 +278,11 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
     report.verdict = "mobile";
     report.reason = "traced by " + how + " to " + num(to_degrees(report.target)) + " deg of hinge " + std::to_string(drive) + " in " +
                     std::to_string(report.steps.size()) + " steps, every step closed to " + num(request.closure_tolerance);
+    // Mobile as a mechanism; the letters are a separate question on this motion.
+    if (report.letter_disagreements > 0)
+      report.reason += "; on this motion " + std::to_string(report.letter_disagreements) +
+                       " hinge(s) end folded against their letter, so whether a motion that keeps every letter exists "
+                       "is not decided here";
   } else {
     report.verdict = "undecided";
     report.trace_note = "trace ended after " + std::to_string(report.steps.size()) + " of " + std::to_string(request.steps) +

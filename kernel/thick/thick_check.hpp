@@ -22,6 +22,8 @@
 //   "rigid":     DOF 0 at the flat state - the closure map is injective to first order there,
 //                so the flat state is an isolated solution (a proof, at the stated rank cut);
 //   "mobile":    the drive reached the target, every landed step closing to closure_tolerance
+//                (the sheet is a mechanism; where the motion ends with hinges against their
+//                letters the reason says that a letter-keeping motion is not decided)
 //                (a certificate). From a regular flat state (DOF 1): 1-DOF pseudo-arclength
 //                continuation. From a singular one (DOF > 1 to first order, e.g. the flat state of
 //                Bricard loops, where first order is inconclusive): projected driving - the drive
