@@ -105,6 +105,8 @@ bool is_thick_fold(const CreasePattern& pattern) {
   return pattern.extra.is_object() && (pattern.extra.contains(kThicknessKey) || pattern.extra.contains(kHeightsKey));
 }
 
+int thick_extension_hinges(const CreasePattern& pattern) { return read_extension(pattern).hinges; }
+
 ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topology, const ThickCheckRequest& request) {
   const Extension ext = read_extension(pattern);
   if (request.to && !(std::isfinite(*request.to) && *request.to != 0 && std::abs(*request.to) <= kPi))

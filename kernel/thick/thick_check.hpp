@@ -55,6 +55,11 @@ namespace rigidfold {
 // True when the pattern carries either thick extension key (then thick_check must answer).
 bool is_thick_fold(const CreasePattern& pattern);
 
+// The extension checked as thick_check checks it first (throws InputError naming the JSON path,
+// e.g. "rigidfold:hinge_heights[3]"); returns the number of hinge edges. Cheap: no solve (the
+// FOLD reader's fuzz target runs it on every input that carries the keys).
+int thick_extension_hinges(const CreasePattern& pattern);
+
 struct ThickCheckRequest {
   std::optional<int> drive;            // hinge edge; default: the hinge that moves most in the flat state's null space
   std::optional<double> to;            // target drive angle (radians, 0 < |to| <= pi); default 170 deg, towards the drive's letter (V: +, M: -, else +)
