@@ -38,7 +38,7 @@ done
 # Waterbomb bistability (seed 004; n = 3, 4 (Fig 2.9: rest at 60 deg, equal springs) and 10):
 # stable states, energy and force against apex height, every sample checked on the general
 # 2n-crease model; and the bundled base (a FOLD file, no waterbomb code on that path) searched
-# for its stable states by the general energy command.
+# for its stable states and the barriers between them by the general energy command.
 mkdir -p out/report/waterbomb
 for spec in "3 60 1" "4 60 1" "10 45 1"; do
   read -r n t0 kr <<<"$spec"
@@ -49,7 +49,7 @@ for spec in "3 60 1" "4 60 1" "10 45 1"; do
     --out "out/report/figures/$(basename "$stem").png" >/dev/null
 done
 ./build/app/rigidfold energy data/bundled/waterbomb_base.fold --rest data/energy/waterbomb_base_rest60.json \
-  --json > out/report/waterbomb/waterbomb_base_energy.json
+  --barriers --json > out/report/waterbomb/waterbomb_base_energy.json
 # Mountain-valley classes (seed 003 §3.2-3.3): every flat-folding assignment of units P and Q
 # and of the square twist, in classes under the pattern's symmetry and the global flip, each
 # with its rigid-foldability verdict.
@@ -68,6 +68,10 @@ mkdir -p out/report/thick
   --json > out/report/thick/miura_4x4_bennett.json
 ./build/app/rigidfold thick data/bundled/miura_4x4_alpha60.fold --thickness 0.05 --hinges valley \
   --json > out/report/thick/miura_4x4_valley.json
+# The diamond arch (seed 003 §4.4.1): check on its zero-thickness strip and on its thick sheet
+# (plane-symmetric Bricard loops; check reads the thick FOLD with the thick model).
+./build/app/rigidfold check data/thick/diamond_arch_6_a30.fold --json > out/report/thick/diamond_arch_check.json
+./build/app/rigidfold check data/thick/diamond_arch_6_a30_thick.fold --json > out/report/thick/diamond_arch_thick_check.json
 # Formats: every bundled crease pattern as SVG (Origami Simulator's convention) and DXF; the tube
 # has no flat crease pattern and is skipped.
 mkdir -p out/report/export
@@ -106,6 +110,11 @@ done
 ./build/app/rigidfold metamaterial --unit square-twist --json --cross-check --plot out/report/metamaterial/square_twist \
   > out/report/metamaterial_square_twist.json
 ./build/app/rigidfold metamaterial --unit element3 --plot out/report/metamaterial/element3 >/dev/null
+# The stacked metamaterials 1-4 (§3.2.3): each layer traced, the stack measured against the
+# elements' closed forms.
+for m in 1 2 3 4; do
+  ./build/app/rigidfold metamaterial --stacked "$m" --json > "out/report/metamaterial/stacked_$m.json"
+done
 # The browser viewer (viewer/): the bundled Type 2M (every branch), a Miura and the tube,
 # playable from out/report/viewer/index.html, and a screenshot of it (type2m.png).
 bash viewer/main_job.sh out/report
