@@ -51,7 +51,14 @@ struct PatternSorceRequest {
   std::optional<MotionBranch> branch;
   TraceRequest trace;
   // The path's parameter t (sorce_path_spline.hpp). The offsets z_f(t) are functions of it, so
-  // it decides which offsets the linear and basis families (and the optimiser) can reach.
+  // it decides which offsets the linear and basis families (and the optimiser) can reach. For
+  // optimising vertex A's offsets kHalfTangent is the better one (it is the seed's eq 35: the
+  // seed's eq 39 coefficients give its FOM 55.3 there, 419 on kDrive; COBYLA from them reaches
+  // 21.0 against 79.5 on kDrive and nothing feasible on kArcLength;
+  // tests/sorce/sorce_path_parameter_test.cpp). The default stays kDrive: kHalfTangent is not
+  // defined on every path (a crease that turns back or ends flat), and the existing designs' and
+  // tests' offsets (linear z = z(1) t included) are functions of the drive parameter: another
+  // default would silently change every joint already designed.
   PathParameter path_parameter = PathParameter::kDrive;
   double thickness = 0.0;               // every panel (> 0) unless face_thickness is given
   std::vector<double> face_thickness;   // empty, or one per face (> 0)

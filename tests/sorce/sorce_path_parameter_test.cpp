@@ -172,7 +172,7 @@ TEST(SorcePathParameter, OptimizeOnTheTracedPathReachesAFeasibleAllConvexDesign)
   EXPECT_LE(o.evaluations, 12);
   EXPECT_TRUE(o.improved);
   // Re-measured on the rebuilt joints (401 samples), not taken from the optimiser's flags.
-  const double start = single_vertex_seed_fom(epsilon);
+  const double start = pattern_fom(sorce_design(p, traced_vertex_a(PathParameter::kHalfTangent)).sorce, epsilon);
   double min_c = INFINITY;
   for (const CreaseJoint& j : d.sorce.creases) {
     if (!j.folds) continue;
