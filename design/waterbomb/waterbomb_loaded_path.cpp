@@ -40,13 +40,15 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
 
   // start: free fold angles; empty = the symmetric closed form at th (near side only).
   Eigen::VectorXd last_x;
-  auto solve = [&](double th, const Eigen::VectorXd& start) {
+  auto solve = [&](double th, const Eigen::VectorXd& start, bool stability = true) {
     LoadedPoint q;
     q.theta = th;
     load.height = r * std::cos(th);
     const Eigen::VectorXd symmetric = per_edge(waterbomb_fold_angles(n, th));
+    HeightControlOptions ho;
+    ho.compute_stability = stability;
     const HeightControlledEquilibrium eq = vertex_height_equilibrium(
-        p, sys, topo, springs, load, start.size() ? start : sys.unknowns_from_edges(symmetric));
+        p, sys, topo, springs, load, start.size() ? start : sys.unknowns_from_edges(symmetric), ho);
     last_x = eq.x;
     const ForcePoint f = waterbomb_force(ws, theta0, r, th);
     q.height = f.height;
@@ -91,12 +93,12 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
       double h_prev = 0.0, h_prev2 = 0.0;
       bool first = true, failed = false;
       const double max_dh = LoadedPathOptions::kMaxHeightStep * r;
-      auto step_to = [&](double th) -> LoadedPoint {
+      auto step_to = [&](double th, bool sample) -> LoadedPoint {
         const double h = r * std::cos(th);
         const Eigen::VectorXd start =
             first ? Eigen::VectorXd(ray_x * (h / ray.height_rate))
                   : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((h - h_prev) / (h_prev - h_prev2)));
-        const LoadedPoint q = solve(th, start);
+        const LoadedPoint q = solve(th, start, sample);
         if (q.converged) {
           x_prev2 = x_prev;
           h_prev2 = h_prev;
@@ -109,9 +111,9 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
       for (std::size_t i : far) {
         const double h = r * std::cos(thetas[i]);
         while (!failed && h_prev - h > max_dh)
-          if (!step_to(std::acos(std::clamp((h_prev - max_dh) / r, -1.0, 1.0))).converged) failed = true;
+          if (!step_to(std::acos(std::clamp((h_prev - max_dh) / r, -1.0, 1.0)), false).converged) failed = true;
         if (!failed) {
-          out.points[i] = step_to(thetas[i]);
+          out.points[i] = step_to(thetas[i], true);
           failed = !out.points[i].converged;
           xs[i] = last_x;
         }
@@ -127,15 +129,15 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
     if (!a.converged || !b.converged) continue;
     if ((a.theta < kPi / 2) != (b.theta < kPi / 2)) continue;  // never across the flat state
     if ((a.min_eigenvalue > 0.0) == (b.min_eigenvalue > 0.0)) continue;
-    // Far side: start from the bracket end's solution (never the closed form); the bracket
-    // shrinks, so the start stays within |hi - lo| of the answer.
+    // Far side: start from the mean of the bracket ends' solutions (never the closed form);
+    // the bracket shrinks, so the start's error falls as |hi - lo|^2.
     const bool far_pair = a.theta > kPi / 2 && xs[i - 1].size() && xs[i].size();
     Eigen::VectorXd x_lo = xs[i - 1], x_hi = xs[i];
     double lo = a.theta, hi = b.theta;
     const bool lo_positive = a.min_eigenvalue > 0.0;
     while (std::fabs(hi - lo) > 1e-10) {
       const double mid = 0.5 * (lo + hi);
-      const LoadedPoint m = solve(mid, far_pair ? x_lo : Eigen::VectorXd());
+      const LoadedPoint m = solve(mid, far_pair ? Eigen::VectorXd(0.5 * (x_lo + x_hi)) : Eigen::VectorXd());
       if (!m.converged) break;
       const bool to_lo = (m.min_eigenvalue > 0.0) == lo_positive;
       (to_lo ? lo : hi) = mid;

@@ -53,7 +53,7 @@ struct LoadedPathOptions {
   // branch through flat is chosen (the springs keep the base's letters): to ask what happens
   // when no cone branch keeps the letters.
   std::vector<int> flipped_letters;
-  static constexpr double kMaxHeightStep = 0.02;  // far-side continuation step, times r
+  static constexpr double kMaxHeightStep = 0.1;  // far-side continuation step, times r
 };
 
 // Inputs: n >= 3, theta0, k_m, k_v as waterbomb_bistability; thetas (radians) in

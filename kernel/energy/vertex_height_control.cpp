@@ -237,6 +237,7 @@ HeightControlledEquilibrium vertex_height_equilibrium(const CreasePattern& patte
   out.force = -out.support_reactions.sum();
   out.energy = crease_energy(springs, out.edge_angles);
 
+  if (!options.compute_stability) return out;
   // Stability: H reduced to null(A).
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();

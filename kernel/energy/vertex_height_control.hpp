@@ -47,6 +47,9 @@ struct HeightControlOptions {
   int max_iterations = 50;
   double rank_tolerance = 1e-9;
   double stability_tolerance = 1e-9;  // eigenvalue > this * max(k): positive
+  // false: skip the reduced Hessian (dense SVD, the dominant cost for large fans); the
+  // result then has tangent_dimension 0, no eigenvalues and stable = false (continuation steps).
+  bool compute_stability = true;
 };
 
 struct HeightControlledEquilibrium {
