@@ -78,7 +78,9 @@ TEST(SorcePathParameter, EveryFoldMovesAtBothEnds) {
   EXPECT_EQ(half.knots.front(), 0.0);
   EXPECT_EQ(half.knots.back(), 1.0);
   for (std::size_t k = 0; k < half.knots.size(); ++k) {
-    if (k > 0) EXPECT_GT(half.knots[k], half.knots[k - 1]);
+    if (k > 0) {
+      EXPECT_GT(half.knots[k], half.knots[k - 1]);
+    }
     for (int e = 0; e < 4; ++e) EXPECT_NEAR(half.rho[e](half.knots[k])[0], half.samples(e, k), 1e-12) << k;  // the samples at the knots
   }
   for (int e = 0; e < 4; ++e) {
