@@ -35,8 +35,9 @@ TEST(WaterbombFlatCrossingCli, JsonReportsTheLetterKeepingBranch) {
   EXPECT_TRUE(fc["branches"][taken]["below_supports"].get<bool>());
   EXPECT_LT(fc["branches"][taken]["height_rate"].get<double>(), 0.0);
   for (std::size_t i = 0; i < fc["branches"].size(); ++i)
-    if (static_cast<int>(i) != taken && fc["branches"][i]["below_supports"].get<bool>())
+    if (static_cast<int>(i) != taken && fc["branches"][i]["below_supports"].get<bool>()) {
       EXPECT_FALSE(fc["branches"][i]["keeps_letters"].get<bool>());
+    }
   // Without --curve there is no crossing to report.
   const auto plain = test::run_command(test::cli() + " waterbomb --n 6 --theta0-deg 50 --json");
   ASSERT_EQ(plain.status, 0) << plain.err;

@@ -27,7 +27,9 @@ TEST(WaterbombCurve, ForceIsTheSlopeOfTheEnergyAndJumpsAtTheFlatState) {
   for (std::size_t i = 0; i < c.samples.size(); ++i) {
     const auto& b = c.samples[i];
     ASSERT_TRUE(b.checked);
-    if (i > 0) EXPECT_LT(c.samples[i - 1].theta, b.theta);
+    if (i > 0) {
+      EXPECT_LT(c.samples[i - 1].theta, b.theta);
+    }
     EXPECT_NEAR(b.deflection, deflection(b.theta), 1e-14);
     const double slope = (waterbomb::waterbomb_energy(springs, b.theta + eps) - waterbomb::waterbomb_energy(springs, b.theta - eps)) /
                          (deflection(b.theta + eps) - deflection(b.theta - eps));

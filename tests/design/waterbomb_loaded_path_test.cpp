@@ -21,7 +21,9 @@ TEST(WaterbombLoadedPath, ForceMatchesVirtualWorkAndStabilityChangesAreLocated) 
     ASSERT_TRUE(q.converged) << to_degrees(q.theta);
     EXPECT_NEAR(q.force, q.force_closed_form, 1e-9 * std::max(1.0, std::fabs(q.force_closed_form))) << to_degrees(q.theta);
     EXPECT_LT(q.fold_angle_gap, 1e-9);
-    if (q.theta < kPi / 2) EXPECT_TRUE(q.stable) << to_degrees(q.theta);  // the push toward flat stays symmetric
+    if (q.theta < kPi / 2) {
+      EXPECT_TRUE(q.stable) << to_degrees(q.theta);  // the push toward flat stays symmetric
+    }
   }
   // Every located change sits between points of opposite stability and is a zero of the
   // smallest eigenvalue: just either side of it the signs differ.
