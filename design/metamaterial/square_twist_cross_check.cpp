@@ -21,6 +21,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/newton_projection.hpp"
+#include "kernel/math/number_text.hpp"
 
 namespace rigidfold::metamaterial {
 namespace {
@@ -31,12 +32,6 @@ constexpr double kFoldedEnd = 0.05;   // states with theta > pi - this are not c
 constexpr double kSignProbe = 1e-4;   // drive offset (rad) for nu_HL either side of a stationary point
 
 int vertex_a(int i, int j) { return 4 * (j * kN + i); }
-
-std::string num(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
 
 struct Sheet {
   CreasePattern pattern;
@@ -178,10 +173,10 @@ SquareTwistCrossCheck square_twist_cross_check(const SquareTwistUnitParams& para
   if (!(std::isfinite(params.a) && params.a > 0)) throw InputError("a", "must be a finite number > 0");
   const double least = square_twist_cross_check_min_offset(params.alpha, params.a);
   if (!(std::isfinite(params.b) && params.b > least * (1 + 1e-9)))
-    throw InputError("b", "the traced tessellation needs b > -a cos(alpha) = " + num(least) +
+    throw InputError("b", "the traced tessellation needs b > -a cos(alpha) = " + short_text(least) +
                               " (pleat creases between twists of positive length)");
   if (!(std::isfinite(params.c) && params.c > least * (1 + 1e-9)))
-    throw InputError("c", "the traced tessellation needs c > -a cos(alpha) = " + num(least) +
+    throw InputError("c", "the traced tessellation needs c > -a cos(alpha) = " + short_text(least) +
                               " (pleat creases between twists of positive length)");
   if (options.steps < 10 || options.steps > 2000)
     throw InputError("steps", "must be between 10 and 2000, got " + std::to_string(options.steps));
@@ -245,14 +240,14 @@ SquareTwistCrossCheck square_twist_cross_check(const SquareTwistUnitParams& para
   out.theta_range_deg[1] = ms.back().theta * 180 / kPi;
 
   auto fail = [](const std::string& what, double value, double limit) {
-    throw NoAnswerError("square-twist cross-check: " + what + " " + num(value) + " exceeds " + num(limit), value);
+    throw NoAnswerError("square-twist cross-check: " + what + " " + short_text(value) + " exceeds " + short_text(limit), value);
   };
   if (out.max_residual > kCrossCheckResidual) fail("closure residual (rad)", out.max_residual, kCrossCheckResidual);
   if (out.max_null_singular > kCrossCheckNullSingular)
     fail("smallest singular value of the closure Jacobian", out.max_null_singular, kCrossCheckNullSingular);
   if (out.min_next_singular < kCrossCheckNextSingular)
-    throw NoAnswerError("square-twist cross-check: second smallest singular value " + num(out.min_next_singular) +
-                        " below " + num(kCrossCheckNextSingular) + ": the traced sheet is not clearly 1 DOF");
+    throw NoAnswerError("square-twist cross-check: second smallest singular value " + short_text(out.min_next_singular) +
+                        " below " + short_text(kCrossCheckNextSingular) + ": the traced sheet is not clearly 1 DOF");
   if (out.max_geometry_defect > kCrossCheckGeometry)
     fail("unit-cell geometry defect (periods, parallel rectangles)", out.max_geometry_defect, kCrossCheckGeometry);
   if (out.compared_steps == 0) throw NoAnswerError("square-twist cross-check: no traced state to compare");
@@ -315,7 +310,7 @@ SquareTwistCrossCheck square_twist_cross_check(const SquareTwistUnitParams& para
     const bool flips = maximum ? (st.nu_HL_before > 0 && st.nu_HL_after < 0) : (st.nu_HL_before < 0 && st.nu_HL_after > 0);
     if (!flips)
       throw NoAnswerError("square-twist cross-check: traced nu_HL does not change sign at stationary point " +
-                          std::to_string(i + 1) + " (" + num(st.nu_HL_before) + " before, " + num(st.nu_HL_after) +
+                          std::to_string(i + 1) + " (" + short_text(st.nu_HL_before) + " before, " + short_text(st.nu_HL_after) +
                           " after)");
     out.max_stationary_theta_difference =
         std::max({out.max_stationary_theta_difference, std::fabs(at.theta - closed_points[i].theta),

@@ -19,6 +19,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/math/number_text.hpp"
 
 namespace rigidfold::metamaterial {
 namespace {
@@ -26,12 +27,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 using V3 = Eigen::Vector3d;
 using generators::StackedLayerSheet;
-
-std::string num(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
 
 struct Layer {
   StackedLayerSheet sheet;
@@ -251,7 +246,7 @@ StackedMetamaterialCheck stacked_metamaterial_check(const generators::StackedMet
   }
 
   auto fail = [](const std::string& what, double value, double limit) {
-    throw NoAnswerError("stacked metamaterial: " + what + " " + num(value) + " exceeds " + num(limit), value);
+    throw NoAnswerError("stacked metamaterial: " + what + " " + short_text(value) + " exceeds " + short_text(limit), value);
   };
   if (out.max_residual > kStackResidual) fail("closure residual (rad)", out.max_residual, kStackResidual);
   if (out.max_bond_gap > kStackBond) fail("bond gap between layers", out.max_bond_gap, kStackBond);
