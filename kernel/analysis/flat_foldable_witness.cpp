@@ -9,6 +9,8 @@
 #include <numbers>
 #include <vector>
 
+#include "kernel/pattern/vertex_boxes.hpp"
+
 namespace rigidfold {
 namespace {
 
@@ -312,14 +314,10 @@ std::optional<FlatFoldableWitness> flat_foldable_witness(const CreasePattern& pa
       down[2 * i] = down[2 * i + 1] = up[2 * i] = up[2 * i + 1] = w.precision.vertex_rounding[i];
   }
   const Eigen::VectorXd rounding = down.cwiseMax(up);
-  w.box_lo.resize(pattern.num_vertices());
-  w.box_hi.resize(pattern.num_vertices());
-  for (int i = 0; i < pattern.num_vertices(); ++i)
-    for (int k = 0; k < 2; ++k) {
-      // One step outward: the subtraction's rounding must not shrink the box.
-      w.box_lo[i][k] = std::nextafter(pattern.vertices[i][k] - down[2 * i + k], -INFINITY);
-      w.box_hi[i][k] = std::nextafter(pattern.vertices[i][k] + up[2 * i + k], INFINITY);
-    }
+  // The same boxes, from the same sources in the same order (vertex_boxes.hpp).
+  VertexBoxes boxes = vertex_boxes(pattern, stated_tolerance);
+  w.box_lo = std::move(boxes.lo);
+  w.box_hi = std::move(boxes.hi);
   // |move| / allowed move in its direction (infinite where nothing is allowed).
   auto move_ratio = [&](int c, double move) {
     const double allowed = move >= 0 ? up[c] : down[c];

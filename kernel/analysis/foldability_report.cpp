@@ -241,10 +241,7 @@ void within_precision_report(const FlatFoldableWitness& w, FoldabilityReport& r)
         std::vector<char> locked(w.witness.num_vertices(), 0);
         for (int v : exact->cycle_vertices) locked[v] = 1;
         for (int v : faces.locked_vertices) locked[v] = 1;
-        every_crease_locked = true;
-        for (int e = 0; e < w.witness.num_edges(); ++e)
-          if (w.witness_topology.edge_is_hinge[e] && !locked[w.witness.edges[e][0]] && !locked[w.witness.edges[e][1]])
-            every_crease_locked = false;
+        every_crease_locked = every_hinge_has_a_locked_end(w.witness, w.witness_topology, locked);
       }
       if (proof.proven && holds_witness && every_crease_locked) {
         r.verdict = FoldabilityClass::kNotFoldableProof;

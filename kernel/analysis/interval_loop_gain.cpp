@@ -117,6 +117,13 @@ IntervalLoopGainProof interval_loop_gain_proof(const CreasePattern& pattern, con
 
 namespace rigidfold {
 
+bool every_hinge_has_a_locked_end(const CreasePattern& pattern, const Topology& topology,
+                                  const std::vector<char>& locked) {
+  for (int e = 0; e < pattern.num_edges(); ++e)
+    if (topology.edge_is_hinge[e] && !locked[pattern.edges[e][0]] && !locked[pattern.edges[e][1]]) return false;
+  return true;
+}
+
 FaceCycleProof face_cycle_loop_gain_proof(const CreasePattern& pattern, const Topology& topology,
                                           const std::vector<Eigen::Vector2d>& box_lo,
                                           const std::vector<Eigen::Vector2d>& box_hi) {
@@ -153,10 +160,7 @@ FaceCycleProof face_cycle_loop_gain_proof(const CreasePattern& pattern, const To
   }
   for (int v = 0; v < pattern.num_vertices(); ++v)
     if (locked[v]) out.locked_vertices.push_back(v);
-  out.every_crease_locked = out.proven;
-  for (int e = 0; e < pattern.num_edges() && out.every_crease_locked; ++e)
-    if (topology.edge_is_hinge[e] && !locked[pattern.edges[e][0]] && !locked[pattern.edges[e][1]])
-      out.every_crease_locked = false;
+  out.every_crease_locked = out.proven && every_hinge_has_a_locked_end(pattern, topology, locked);
   return out;
 }
 

@@ -71,6 +71,11 @@ struct FaceCycleProof {
   std::vector<int> locked_vertices;  // increasing
   bool every_crease_locked = false;
 };
+// True when every hinge crease (two faces across it) has an end at a vertex marked in
+// `locked` (one entry per vertex): then no crease can fold.
+bool every_hinge_has_a_locked_end(const CreasePattern& pattern, const Topology& topology,
+                                  const std::vector<char>& locked);
+
 FaceCycleProof face_cycle_loop_gain_proof(const CreasePattern& pattern, const Topology& topology,
                                           const std::vector<Eigen::Vector2d>& box_lo,
                                           const std::vector<Eigen::Vector2d>& box_hi);
