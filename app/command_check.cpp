@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/terminal_progress.hpp"
+#include "app/thick_flags.hpp"
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
 #include "app/foldability_json.hpp"
@@ -60,14 +61,15 @@ void add_check_command(CLI::App& app) {
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->add_flag("--general", a->general, "force the general loop-closure solver (skip multiplier propagation)");
-  cmd->add_option("--tolerance", a->tolerance,
+  CLI::Option* tolerance_option = cmd->add_option("--tolerance", a->tolerance,
                   "how far each coordinate may lie from the true one, in the file's length unit: auto (default: read off "
                   "the file's digits, float32 or drawn points), exact (judge the numbers as they are), or a number >= 0");
-  cmd->callback([a] {
+  cmd->callback([a, tolerance_option] {
     const std::optional<double> tolerance = coordinate_tolerance_flag("--tolerance", a->tolerance);
     const CreasePattern p = read_pattern(a->pattern);
     const Topology t = build_topology(p, a->pattern);
     if (is_thick_fold(p)) {  // `rigidfold thick --out`'s FOLD: the thick model answers (kernel/thick/thick_check.hpp)
+      refuse_flags_a_thick_fold_ignores({a->ignore, a->general, tolerance_option->count() > 0});
       const ThickCheckReport r = thick_check(p, t);
       nlohmann::ordered_json j = {{"file", a->pattern}};
       j.update(thick_check_json(p, r, false));

@@ -50,6 +50,7 @@
 #include <optional>
 
 #include "app/terminal_progress.hpp"
+#include "app/thick_flags.hpp"
 #include "app/commands.hpp"
 #include "app/number_flags.hpp"
 #include "app/provenance.hpp"
@@ -244,10 +245,10 @@ void add_trace_command(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print the summary as JSON");
   cmd->add_flag("--ignore-assignment", a->ignore, "ignore the M-V assignment (any signs)");
   cmd->add_flag("--general", a->general, "force the general loop-closure solver");
-  cmd->add_option("--tolerance", a->tolerance,
+  CLI::Option* tolerance_option = cmd->add_option("--tolerance", a->tolerance,
                   "how far each coordinate may lie from the true one, in the file's length unit: auto (default: read off "
                   "the input), exact, or a number >= 0 (as check --tolerance)");
-  cmd->callback([a] {
+  cmd->callback([a, tolerance_option] {
     // Every path checked against the others before any work; all outputs committed together.
     OutputSet outputs;
     outputs.add_input("PATTERN", a->pattern);
@@ -262,6 +263,7 @@ void add_trace_command(CLI::App& app) {
     if (is_thick_fold(p)) {  // `rigidfold thick --out`'s FOLD: traced with the thick model (kernel/thick/thick_check.hpp)
       if (!a->out.empty() || !a->csv.empty()) throw InputError(a->out.empty() ? "--csv" : "--out", "not written for a thick FOLD (its trace is printed; rigidfold thick --stl writes slabs)");
       if (!a->branch.empty()) throw InputError("--branch", "a thick FOLD has one traced motion (no branches)");
+      refuse_flags_a_thick_fold_ignores({a->ignore, a->general, tolerance_option->count() > 0});
       ThickCheckRequest tq{a->drive, a->to ? std::optional<double>(to_radians(*a->to)) : std::nullopt, a->steps};
       tq.drive_place = "--drive", tq.to_place = "--to", tq.steps_place = "--steps";
       const ThickCheckReport r = thick_check(p, t, tq);

@@ -2,7 +2,8 @@
 // kernel/thick/thick_check.hpp): the file `rigidfold thick --out` writes is answered with the
 // thick model - Bennett heights on the bundled 4 x 4 Miura-ori are mobile with DOF 1 and the
 // trace lands on the `thick` command's own trace; valley-side hinges are rigid (DOF 0 at flat);
-// bad extension data exits 2 naming its JSON path; trace refuses --out for a thick FOLD.
+// bad extension data exits 2 naming its JSON path; trace refuses --out for a thick FOLD, and
+// both refuse --ignore-assignment, --general and --tolerance there.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -138,6 +139,23 @@ TEST(ThickCheckCli, BadExtensionExitsTwoNamingTheJsonPath) {
   const auto d = test::run_command(test::cli() + " trace " + good + " --drive 100000");
   EXPECT_EQ(d.status, 2);
   EXPECT_NE(d.err.find("--drive"), std::string::npos) << d.err;
+}
+
+// Flags with no meaning for the thick model are refused, not silently ignored: the thick
+// model always runs the general SE(3) solver, reports the letters its motion keeps, and
+// judges its numbers as written.
+TEST(ThickCheckCli, FlagsTheThickModelCannotHonourExitTwo) {
+  const std::string good = thick_fold("bennett");
+  for (const char* command : {"check", "trace"})
+    for (const char* flag : {"--ignore-assignment", "--general", "--tolerance 1e-6", "--tolerance auto"}) {
+      const auto r = test::run_command(test::cli() + " " + command + " " + good + " " + flag);
+      EXPECT_EQ(r.status, 2) << command << " " << flag << ": " << r.out;
+      const std::string name = std::string(flag).substr(0, std::string(flag).find(' '));
+      EXPECT_NE(r.err.find(name), std::string::npos) << command << " " << flag << ": " << r.err;
+      EXPECT_TRUE(r.out.empty()) << command << " " << flag << ": " << r.out;
+    }
+  const auto plain = test::run_command(test::cli() + " check " + good);
+  EXPECT_EQ(plain.status, 0) << plain.err;
 }
 
 }  // namespace
