@@ -51,8 +51,8 @@ What is compared, per verdict class (the kernel's `check FILE --json`):
   printed, not asserted.
 
 The corpus lives beside the project (SOURCE_DIR/../shared/corpus); CI clones have none, and then
-this module is skipped. hypar.svg (undecided; `check` alone takes 17-30 s) is skipped unless
-RIGIDFOLD_CORPUS_SLOW=1.
+this module is skipped. Every file is checked (hypar.svg, undecided, was skipped while `check` took
+17-30 s on it; it takes ~2 s now).
 
 Found earlier (was a strict xfail): BoxPleatSpiralPyramid.fold got "not foldable (evidence)", but
 folds under our search with a worst vertex closure of 2e-8 x amplitude (2e-10 rad at amplitude 0.01),
@@ -89,12 +89,8 @@ SIGN_TOL = 1e-9           # letters: M <= SIGN_TOL, V >= -SIGN_TOL
 FOUND_TOL = 1e-10         # our search "folds" a pattern when its closure gets this small
 EVIDENCE_FLOOR = 1e-9     # the floor: no "not foldable" rests on a residual below this
 
-SLOW = {
-    # The kernel's `check` alone takes 17 s (30 s on a loaded machine) on the general solver's search;
-    # the verdict is "undecided", where this test would only assert is_proof false.
-    "origami-simulator/hypar.svg": "check takes 17-30 s (undecided: only is_proof false would be "
-                                   "asserted); set RIGIDFOLD_CORPUS_SLOW=1 to include it",
-}
+# Files too slow for every run, skipped unless RIGIDFOLD_CORPUS_SLOW=1 (none at present).
+SLOW = {}
 
 
 def corpus_files():
