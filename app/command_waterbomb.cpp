@@ -11,7 +11,8 @@
 // flat state the general model continues along the one branch of the flat state's tangent
 // cone that keeps the M/V letters (waterbomb_flat_crossing.hpp): the JSON's "flat_crossing"
 // (cone lines, every branch's direction, height rate and letter check, the one taken) and a
-// text line report it; no such branch: exit 3 with that reason.
+// text line report it; no such branch: exit 3 with that reason. The split fold's curve crosses
+// flat the same way (its symmetric motion: all half-valleys equal, all half-mountains equal).
 // --split-deg B: the split-fold base (sector b = B deg, design/waterbomb/split_fold_bistability.hpp),
 // every equilibrium and curve sample confirmed on the general 4n-crease model; theta0 must lie
 // in the split fold's valid range. The split fold's switching force is the general model's
@@ -523,33 +524,41 @@ void add_waterbomb_command(CLI::App& app) {
     if (!a->curve.empty() || !a->plot.empty()) {
       std::vector<waterbomb::CurveSample> curve;
       int unchecked = 0;
-      if (split_fold) {
-        const waterbomb::SplitFoldCurve c = waterbomb::split_fold_curve(a->n, b, theta0, k_m, k_v, a->samples);
-        curve = c.samples;
-        unchecked = c.unchecked;
-      } else {
-        const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
-        curve = c.samples;
-        unchecked = c.unchecked;
-        // Which branch of the flat state's tangent cone the general model continued along.
-        const waterbomb::FlatCrossing& fc = c.flat_crossing;
+      // Which branch of the flat state's tangent cone the general model continued along.
+      auto write_flat_crossing = [&](const waterbomb::FlatCrossing& fc, int creases, const char* system) {
         nlohmann::ordered_json branches = nlohmann::ordered_json::array();
         for (const auto& br : fc.branches) {
           std::vector<double> dir;
-          for (int e = 0; e < 2 * a->n; ++e) dir.push_back(br.direction[e]);
+          for (int e = 0; e < creases; ++e) dir.push_back(br.direction[e]);
           branches.push_back({{"direction", dir},
                               {"height_rate", br.height_rate},
                               {"below_supports", br.far_side},
                               {"keeps_letters", br.keeps_letters},
                               {"first_wrong_crease", br.first_wrong_crease < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(br.first_wrong_crease)}});
         }
-        j["flat_crossing"] = {{"system", "closure rows + rotational symmetry equalities, tangent cone at the flat state"},
+        j["flat_crossing"] = {{"system", system},
                               {"kernel_dimension", fc.kernel_dimension},
                               {"cone_lines", fc.cone_lines},
                               {"branches_below_supports", fc.far_side_branches},
                               {"letter_keeping_below_supports", fc.letter_keeping},
                               {"taken", fc.taken < 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(fc.taken)},
                               {"branches", branches}};
+      };
+      if (split_fold) {
+        const waterbomb::SplitFoldCurve c = waterbomb::split_fold_curve(a->n, b, theta0, k_m, k_v, a->samples);
+        curve = c.samples;
+        unchecked = c.unchecked;
+        if (c.crosses_flat)
+          write_flat_crossing(c.flat_crossing, 4 * a->n,
+                              "closure rows + symmetry equalities (all half-valleys equal, all half-mountains equal), "
+                              "tangent cone at the flat state; supports: the half-valley ends (split facets' outer-edge midpoints)");
+        if (c.stopped_at_flat || !c.stop_message.empty())
+          throw NoAnswerError(std::string(a->curve.empty() ? "--plot" : "--curve") + ": " + c.stop_message);
+      } else {
+        const waterbomb::WaterbombCurve c = waterbomb::waterbomb_curve(a->n, theta0, k_m, k_v, a->samples);
+        curve = c.samples;
+        unchecked = c.unchecked;
+        write_flat_crossing(c.flat_crossing, 2 * a->n, "closure rows + rotational symmetry equalities, tangent cone at the flat state");
         if (c.stopped_at_flat || !c.stop_message.empty())
           throw NoAnswerError(std::string(a->curve.empty() ? "--plot" : "--curve") + ": " + c.stop_message);
       }

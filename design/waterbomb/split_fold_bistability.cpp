@@ -96,9 +96,14 @@ struct GeneralModel {
   }
   // The loaded equilibrium at the vertex height r cos(theta), started on the printed path.
   HeightControlledEquilibrium loaded(double theta) {
-    load.height = r * std::cos(theta);
-    return vertex_height_equilibrium(pattern, system, topology, springs, load,
-                                     system.unknowns_from_edges(per_edge(split_fold_angles_printed(s.n, s.b, theta))));
+    return loaded_from(r * std::cos(theta), system.unknowns_from_edges(per_edge(split_fold_angles_printed(s.n, s.b, theta))));
+  }
+  // The loaded equilibrium at vertex height h from the start x0 (free fold angles).
+  HeightControlledEquilibrium loaded_from(double h, const Eigen::VectorXd& x0, bool stability = true) {
+    load.height = h;
+    HeightControlOptions ho;
+    ho.compute_stability = stability;
+    return vertex_height_equilibrium(pattern, system, topology, springs, load, x0, ho);
   }
   // Largest spread among the half-valleys and among the half-mountains (radians).
   double asymmetry(const Eigen::VectorXd& rho) const {
@@ -385,10 +390,19 @@ double split_fold_mountain_stiffness_for_switching_force(int n, double b, double
       [&](double k_m) { return split_fold_switching_force(n, b, theta0, k_m, k_v).force; }, k_v, target);
 }
 
-SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, double k_v, int samples) {
+std::vector<std::vector<int>> split_fold_motion_classes(int n) {
+  std::vector<std::vector<int>> classes(2);
+  for (int i = 0; i < 4 * n; ++i) classes[i % 4 < 2 ? 0 : 1].push_back(i);
+  return classes;
+}
+
+SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, double k_v, int samples,
+                                const SplitFoldCurveOptions& options) {
   if (samples < 3 || samples > 2001)
     throw InputError("samples", "must be between 3 and 2001, got " + std::to_string(samples));
   const SplitFoldSprings s = split_fold_springs(n, b, theta0, k_m, k_v);
+  for (int e : options.flipped_letters)
+    if (e < 0 || e >= 4 * n) throw InputError("flipped_letters", "crease " + std::to_string(e) + " is not one of the 4n creases");
   GeneralModel model(s);
   const double lo = s.range.theta_min, hi = s.range.theta_max;
   const double margin = 1e-2 * (hi - lo);  // the printed forms turn singular at both ends (sqrt onset)
@@ -401,10 +415,65 @@ SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, doub
   thetas.erase(std::unique(thetas.begin(), thetas.end()), thetas.end());
   const double r = model.r;
   SplitFoldCurve out;
+
+  // Far side: the branch through flat from the tangent cone of the symmetric closure system.
+  Eigen::VectorXd ray_x;
+  double ray_rate = 0.0;
+  if (thetas.back() > kPi / 2) {
+    out.crosses_flat = true;
+    CreasePattern lettered = model.pattern;
+    for (int e : options.flipped_letters)
+      lettered.assignments[e] = lettered.assignments[e] == Assignment::Mountain ? Assignment::Valley : Assignment::Mountain;
+    out.flat_crossing = waterbomb_flat_crossing(lettered, model.load.support_edges, split_fold_motion_classes(n));
+    if (out.flat_crossing.continues) {
+      const FlatBranch& ray = out.flat_crossing.branches[out.flat_crossing.taken];
+      ray_x = model.system.unknowns_from_edges(ray.direction);
+      ray_rate = ray.height_rate;
+    } else {
+      out.stopped_at_flat = true;
+      out.stop_message = out.flat_crossing.message;
+    }
+  }
+  // Natural continuation in the height from the flat state (x = 0, h = 0) along the ray.
+  Eigen::VectorXd x_prev = Eigen::VectorXd::Zero(model.system.num_unknowns()), x_prev2 = x_prev;
+  double h_prev = 0.0, h_prev2 = 0.0;
+  bool first = true, failed = false;
+  auto step_to = [&](double h, bool sample) {
+    const Eigen::VectorXd start = first ? Eigen::VectorXd(ray_x * (h / ray_rate))
+                                        : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((h - h_prev) / (h_prev - h_prev2)));
+    const HeightControlledEquilibrium eq = model.loaded_from(h, start, sample);
+    if (eq.converged) {
+      x_prev2 = x_prev;
+      h_prev2 = h_prev;
+      x_prev = eq.x;
+      h_prev = h;
+      first = false;
+    } else {
+      failed = true;
+    }
+    return eq;
+  };
+  const double max_dh = SplitFoldCurveOptions::kMaxHeightStep * r;
+
   for (double th : thetas) {
     CurveSample c;
     c.theta = th;
-    const HeightControlledEquilibrium eq = model.loaded(th);
+    HeightControlledEquilibrium eq;
+    if (th > kPi / 2) {
+      const double h = r * std::cos(th);
+      while (!out.stopped_at_flat && !failed && h_prev - h > max_dh) step_to(h_prev - max_dh, false);
+      if (!out.stopped_at_flat && !failed) eq = step_to(h, true);
+      if (failed && out.stop_message.empty())
+        out.stop_message = "the continuation from the flat state did not converge before theta = " +
+                           round_trip_text(to_degrees(th)) + " deg";
+      if (!eq.converged) {  // no solution on the chosen branch: nothing to check or show
+        ++out.unchecked;
+        out.samples.push_back(c);
+        continue;
+      }
+    } else {
+      eq = model.loaded(th);
+    }
     const FoldPair printed = ranged_angles(s, th);
     // dV/dtheta of the printed energy: two Richardson levels on central differences (steps h,
     // h/2, h/4; error O(h^6)), h kept inside the range and on this side of flat.

@@ -39,6 +39,7 @@
 #include "design/waterbomb/split_fold_kinematics.hpp"
 #include "design/waterbomb/waterbomb_bistability.hpp"
 #include "design/waterbomb/waterbomb_curve.hpp"
+#include "design/waterbomb/waterbomb_flat_crossing.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 
 namespace rigidfold::waterbomb {
@@ -94,7 +95,8 @@ SplitFoldBistability split_fold_bistability(int n, double b, double theta0, doub
 // Energy and force-deflection samples (design/waterbomb/waterbomb_curve.hpp's CurveSample):
 // `samples` thetas evenly over [theta*, theta_max] (ends kept 1e-2 of the range inside, where
 // the printed forms turn singular; flat nudged by the same to its side). Each: the general model's loaded equilibrium at h = r cos
-// theta (force = its reaction, stability = its reduced Hessian), checked when converged,
+// theta (near side started on the printed path; far side by continuation from flat, see
+// SplitFoldCurveOptions) (force = its reaction, stability = its reduced Hessian), checked when converged,
 // symmetric and on the printed path (kPathAgreement); force_closed_form is dV/dh of the printed
 // energy by central differences with two Richardson levels (steps 1e-3, 5e-4, 2.5e-4 rad), and a
 // sample is checked only when the two forces agree within kForceAgreement x max(1, |F|).
@@ -127,11 +129,37 @@ SplitFoldSwitching split_fold_switching_force(int n, double b, double theta0, do
 // NoAnswerError when k_m = 0 already switches above the target or no k_m up to 1e12 k_v reaches it.
 double split_fold_mountain_stiffness_for_switching_force(int n, double b, double theta0, double k_v, double target);
 
+// The split fold's symmetric motion as motion classes of split_fold_base's creases (for
+// waterbomb_flat_crossing): every half-valley (crease i, i % 4 < 2) one class, every
+// half-mountain the other, i.e. the rotational symmetry C_n together with the mirror through
+// each split facet's centreline (C_n alone leaves 4 angles per period and a 3-DOF family).
+std::vector<std::vector<int>> split_fold_motion_classes(int n);
+
+// Far side of flat (theta > pi/2) the curve is reached by continuation from the flat state
+// along the one branch of its tangent cone that keeps the M/V letters
+// (waterbomb_flat_crossing.hpp with split_fold_motion_classes, supports the half-valleys): the
+// first start is that ray to first order, the next a secant predictor in the height, with
+// hidden steps of at most kMaxHeightStep * r between samples. The printed forms are compared
+// there (the checks above), never used as a start. No such branch, or more than one: the
+// far-side samples are unchecked and stopped_at_flat says why.
+struct SplitFoldCurveOptions {
+  // Creases (0..4n-1) whose M/V letter is read reversed when the branch through flat is chosen
+  // (the springs keep the base's letters): to ask what happens when no branch keeps them.
+  std::vector<int> flipped_letters;
+  static constexpr double kMaxHeightStep = 0.1;  // far-side continuation step, times r
+};
+
 struct SplitFoldCurve {
   std::vector<CurveSample> samples;
   int unchecked = 0;
+  bool crosses_flat = false;     // some sample lies past flat: flat_crossing is filled
+  FlatCrossing flat_crossing;
+  bool stopped_at_flat = false;
+  std::string stop_message;      // why far-side samples have no solution (flat crossing or a failed step)
   static constexpr double kForceAgreement = 1e-6;  // relative: the difference quotient's own error
 };
-SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, double k_v, int samples);
+// Throws InputError("flipped_letters") for an index that is not one of the 4n creases.
+SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, double k_v, int samples,
+                                const SplitFoldCurveOptions& options = {});
 
 }  // namespace rigidfold::waterbomb

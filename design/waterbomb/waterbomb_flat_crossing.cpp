@@ -40,22 +40,32 @@ double height_rate(const CreasePattern& p, const Fan& fan, const std::vector<int
 
 }  // namespace
 
-FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vector<int>& support_edges) {
+FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vector<int>& support_edges,
+                                     const std::vector<std::vector<int>>& motion_classes) {
   const Topology topo = build_topology(base);
-  if (topo.stars.empty() || !topo.stars[0].interior() || topo.stars[0].fans[0].edges.size() % 2 != 0 ||
-      topo.stars[0].fans[0].edges.size() < 6)
-    throw std::invalid_argument("waterbomb_flat_crossing: vertex 0 must be the base's interior vertex with 2n >= 6 creases");
+  if (topo.stars.empty() || !topo.stars[0].interior() || topo.stars[0].fans[0].edges.size() < 6)
+    throw std::invalid_argument("waterbomb_flat_crossing: vertex 0 must be the base's interior vertex with >= 6 creases");
   const Fan& fan = topo.stars[0].fans[0];
-  const int two_n = static_cast<int>(fan.edges.size());
   if (support_edges.size() < 3) throw std::invalid_argument("waterbomb_flat_crossing: needs at least 3 support creases");
-  for (int e : support_edges) {
-    bool found = false;
-    for (int f : fan.edges) found = found || f == e;
-    if (!found) throw std::invalid_argument("waterbomb_flat_crossing: support crease not at the centre vertex");
-  }
-  // The symmetric load's symmetry: crease 2k moves with crease 0, crease 2k+1 with crease 1.
+  auto in_fan = [&](int e) {
+    for (int f : fan.edges)
+      if (f == e) return true;
+    return false;
+  };
+  for (int e : support_edges)
+    if (!in_fan(e)) throw std::invalid_argument("waterbomb_flat_crossing: support crease not at the centre vertex");
+  // The symmetric motion: every crease of a class moves with the class's first crease.
+  std::vector<int> seen(base.num_edges(), 0);
   ClosureOptions opt;
-  for (int k = 2; k < two_n; ++k) opt.equalities.push_back({fan.edges[k], fan.edges[k % 2], 1.0});
+  for (const std::vector<int>& c : motion_classes) {
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (c[i] < 0 || c[i] >= base.num_edges() || !in_fan(c[i]) || seen[c[i]]++)
+        throw std::invalid_argument("waterbomb_flat_crossing: motion classes must partition the centre vertex's creases");
+      if (i > 0) opt.equalities.push_back({c[i], c[0], 1.0});
+    }
+  }
+  for (int f : fan.edges)
+    if (!seen[f]) throw std::invalid_argument("waterbomb_flat_crossing: motion classes must partition the centre vertex's creases");
   const ClosureSystem sys(base, topo, opt);
   TangentConeOptions cone_opt;
   cone_opt.rank_tolerance = kDefaultTolerances.cone_rank_cut;
@@ -98,7 +108,12 @@ FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vecto
     out.continues = true;
   } else {
     out.taken = -1;
-    out.message = out.letter_keeping == 0
+    out.message = out.cone_lines == 0
+                      ? "the flat state's tangent cone has no isolated line (first-order kernel of dimension " +
+                            std::to_string(out.kernel_dimension) +
+                            "): the symmetric closure system leaves a continuum of branches, none to choose: the loaded "
+                            "path stops at the flat state"
+                  : out.letter_keeping == 0
                       ? "no branch of the flat state's tangent cone (" + std::to_string(out.cone_lines) + " lines, " +
                             std::to_string(out.far_side_branches) +
                             " rays below the supports) keeps the M/V letters: the loaded path stops at the flat state"
@@ -107,6 +122,17 @@ FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vecto
                             "unique continuation, the loaded path stops at the flat state";
   }
   return out;
+}
+
+FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vector<int>& support_edges) {
+  const Topology topo = build_topology(base);
+  if (topo.stars.empty() || !topo.stars[0].interior() || topo.stars[0].fans[0].edges.size() % 2 != 0 ||
+      topo.stars[0].fans[0].edges.size() < 6)
+    throw std::invalid_argument("waterbomb_flat_crossing: vertex 0 must be the base's interior vertex with 2n >= 6 creases");
+  const Fan& fan = topo.stars[0].fans[0];
+  std::vector<std::vector<int>> classes(2);
+  for (std::size_t k = 0; k < fan.edges.size(); ++k) classes[k % 2].push_back(fan.edges[k]);
+  return waterbomb_flat_crossing(base, support_edges, classes);
 }
 
 }  // namespace rigidfold::waterbomb

@@ -5,11 +5,14 @@
 // all-reversed mirror meet there, and the loaded path has a corner. The branch on the far
 // side (vertex below its supports, height < 0) is chosen from the tangent cone of the
 // closure system (kernel/solve/tangent_cone.hpp) at x = 0, never from a closed form:
-//   - system: the base's closure rows plus the rotational-symmetry equalities of the
-//     symmetric load (crease 2k = crease 0, crease 2k+1 = crease 1, the generator's order).
-//     Without them the flat-state cone of one 2n-crease vertex is a quadric continuum (one
-//     quadratic condition on a (2n-2)-dimensional kernel), with no discrete branches to pick;
-//     with them it has isolated lines: the symmetric branches;
+//   - system: the base's closure rows plus the equalities of the symmetric motion: the
+//     creases of one motion class fold together (plain base: crease 2k = crease 0, crease
+//     2k+1 = crease 1, the generator's order; split fold: every half-valley equal, every
+//     half-mountain equal). Without them the flat-state cone of one vertex is a quadric
+//     continuum (one quadratic condition on a many-dimensional kernel), with no discrete
+//     branches to pick; with a 1-DOF symmetric motion it has isolated lines: its branches.
+//     A cone without isolated lines (e.g. the split fold with its rotational symmetry only:
+//     4 angles per period, one closure condition, a 3-DOF family) stops the path, saying so;
 //   - every line gives two rays (branches leaving flat); each ray's first-order vertex
 //     height rate dh/ds is the offset of the plane fitted through the supports' far ends
 //     (first-order positions in crease 0's frame, +z the sheet's side that is up at rest);
@@ -47,10 +50,18 @@ struct FlatCrossing {
   std::string message;           // why it stops (empty when it continues)
 };
 
-// Inputs: a waterbomb base from data/generators/waterbomb.hpp (vertex 0 the centre, creases
-// 0..2n-1 in CCW order; only its assignments are read as letters, so a caller may flip
-// some), and the support creases (their far ends rest on the plane).
-// Throws std::invalid_argument for a pattern that is not such a base.
+// Inputs: a single-vertex base whose vertex 0 is the interior centre (creases in its fan;
+// only their assignments are read as letters, so a caller may flip some), the support creases
+// (their far ends rest on the plane; for the split fold the half-valleys, whose ends span the
+// plane through the split facets' outer-edge midpoints), and the motion classes: every fan
+// crease in exactly one class, the creases of a class fold by the same angle.
+// Throws std::invalid_argument for a pattern without such a vertex, a support or class crease
+// not in its fan, or classes that do not partition the fan.
+FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vector<int>& support_edges,
+                                     const std::vector<std::vector<int>>& motion_classes);
+
+// The plain base from data/generators/waterbomb.hpp (creases 0..2n-1 in CCW order): the
+// motion classes are the even and the odd creases.
 FlatCrossing waterbomb_flat_crossing(const CreasePattern& base, const std::vector<int>& support_edges);
 
 }  // namespace rigidfold::waterbomb

@@ -64,8 +64,9 @@ TEST(WaterbombFlatCrossing, ConeHasTheMirrorAndOnlyTheLetterKeepingBranchIsTaken
     Eigen::VectorXd mirror = waterbomb_edge_angles(p, din);
     mirror.normalize();
     for (int i = 0; i < 4; ++i)
-      if (i != c.taken && c.branches[i].far_side)
+      if (i != c.taken && c.branches[i].far_side) {
         EXPECT_LE((c.branches[i].direction - mirror).lpNorm<Eigen::Infinity>(), 1e-9);
+      }
   }
 }
 
