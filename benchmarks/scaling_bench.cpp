@@ -152,17 +152,31 @@ void continuation_counters(benchmark::State& state, const ContinuationResult& re
   state.counters["s_solve"] = st.seconds_solve;
   state.counters["s_null_vector"] = st.seconds_null_vector;
   state.counters["s_evaluate"] = st.seconds_evaluate;
+  state.counters["pcg_solves"] = st.pcg_solves;
+  state.counters["pcg_its"] = st.pcg_iterations;
+  state.counters["pcg_fallbacks"] = st.pcg_fallbacks;
+  state.counters["pcg_predicted"] = st.pcg_predicted_renewals;
+  state.counters["s_pcg"] = st.seconds_pcg;
+  state.SetLabel(res.linear_solver);
 }
 
-// One continuation step (predictor + corrector + tangent) from the closed form; range(1):
-// 1 = factorisation reuse (chord corrector), 0 = Newton (refactorise every iteration).
+// range(1) of the continuation benchmarks: 1 = factorisation reuse (chord corrector), 0 =
+// Newton with a fresh factorisation per iteration (LinearSolver::kDirect), 2 = Newton with the
+// stale-factor PCG step (LinearSolver::kPcg).
+void set_corrector(ContinuationOptions& o, int64_t mode) {
+  o.reuse = mode == 1 ? FactorizationReuse::kOn : FactorizationReuse::kOff;
+  o.linear_solver = mode == 2 ? LinearSolver::kPcg : LinearSolver::kDirect;
+}
+
+// One continuation step (predictor + corrector + tangent) from the closed form; range(1) as
+// for set_corrector.
 void BM_ContinuationStep(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
   ContinuationOptions o;
   o.max_points = 2;
   o.initial_step = 0.02 * std::sqrt(static_cast<double>(c.system.num_unknowns()));
   o.max_step = o.initial_step;
-  o.reuse = state.range(1) ? FactorizationReuse::kOn : FactorizationReuse::kOff;
+  set_corrector(o, state.range(1));
   ContinuationResult res;
   const Eigen::VectorXd dir = c.closed_form(1.3) - c.exact;
   for (auto _ : state) res = continue_one_dof(c.system, c.exact, dir, [](const Eigen::VectorXd&) { return false; }, o);
@@ -176,7 +190,7 @@ void BM_ContinuationStep(benchmark::State& state) {
 }
 
 // A full trace: from rho_s = 5 deg (the flat state itself is a singular point) to 170 deg in
-// about 100 equal arclength steps; range(1) as for BM_ContinuationStep. Error:
+// about 100 equal arclength steps; range(1) as for set_corrector. Error:
 // the worst distance of any traced point from the closed form at its own rho_s.
 void BM_Trace(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
@@ -184,7 +198,7 @@ void BM_Trace(benchmark::State& state) {
   const Eigen::VectorXd x0 = c.closed_form(start_fold);
   ContinuationOptions o;
   o.initial_step = o.max_step = (c.closed_form(end_fold) - x0).norm() / 100;
-  o.reuse = state.range(1) ? FactorizationReuse::kOn : FactorizationReuse::kOff;
+  set_corrector(o, state.range(1));
   const int driver = c.driver();
   ContinuationResult res;
   for (auto _ : state)
@@ -395,7 +409,7 @@ void register_all() {
     add("BM_Jacobian", BM_Jacobian)->Arg(n);
     add("BM_Factorize", BM_Factorize)->Args({n, 0});
     add("BM_Corrector", BM_Corrector)->Args({n, 0, 12});
-    for (int reuse : {1, 0}) add("BM_ContinuationStep", BM_ContinuationStep)->Args({n, reuse});
+    for (int mode : {1, 0, 2}) add("BM_ContinuationStep", BM_ContinuationStep)->Args({n, mode});
     add("BM_GradedMultiplier", BM_GradedMultiplier)->Arg(n);
     add("BM_GradedCorrector", BM_GradedCorrector)->Arg(n);
   }
@@ -413,14 +427,16 @@ void register_all() {
     add("BM_Corrector", BM_Corrector)->Args({mid, ord, 12});
   }
   for (int tol : {6, 8, 10}) add("BM_Corrector", BM_Corrector)->Args({mid, 0, tol});
-  // Traces, range(1): 1 = factorisation reuse, 0 = Newton. Up to 2000 unknowns the
-  // continuation checks DOF = 1 at every point (dense SVD up to 200 unknowns, the factor
-  // subspace above: n = 30 took minutes with the dense SVD it used before).
-  for (int n : {10, 30, 40, 100})
-    for (int reuse : {1, 0}) add("BM_Trace", BM_Trace)->Args({n, reuse})->Iterations(1);
+  // Traces, range(1): 1 = factorisation reuse, 0 = Newton (direct), 2 = Newton (PCG; from
+  // 40 x 40 up only). Up to 2000 unknowns the continuation checks DOF = 1 at every point (dense
+  // SVD up to 200 unknowns, the factor subspace above: n = 30 took minutes with the dense SVD
+  // it used before).
+  for (int n : {10, 30, 40, 100, 200})
+    for (int mode : {1, 0, 2})
+      if (mode != 2 || n >= 40) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
   if (large >= 1)
     for (int n : {160, 320})
-      for (int reuse : {1, 0}) add("BM_Trace", BM_Trace)->Args({n, reuse})->Iterations(1);
+      for (int mode : {1, 0, 2}) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
   for (int n : {10, 20, 40, 100, 200}) add("BM_Rank", BM_Rank)->Args({n, 0});
   for (int n : {20, 40}) add("BM_Rank", BM_Rank)->Args({n, 3});
   if (large >= 1) add("BM_Rank", BM_Rank)->Args({320, 0});

@@ -9,6 +9,7 @@
 
 #include "kernel/solve/newton_projection.hpp"
 #include "kernel/solve/rank.hpp"
+#include "kernel/solve/stale_pcg.hpp"
 
 namespace rigidfold {
 
@@ -18,6 +19,21 @@ namespace {
 // (inverse iteration) instead of a rank-revealing factorisation of J at every point: SPQR
 // on a 10^5-10^6-crease Jacobian costs far more than the whole corrector.
 constexpr int kRankRevealingLimit = 2000;
+
+// LinearSolver::kAuto: the PCG corrector from this many unknowns up, the direct one below.
+// For now never: PCG stays opt-in (kPcg). Measured (Miura, CPU time, min of 2-3 runs on a
+// 2-core machine at load 3-4):
+//   BM_Trace (104 points of equal arclength from 5 to 170 deg): 40 x 40 268 against 316 ms,
+//   100 x 100 2.57 against 3.45 s, 200 x 200 18.6 against 25.1 s (1.0 factorisation per step
+//   instead of 2.0-2.7, the same points; error against the closed form 7.7e-13 / 5.4e-12 /
+//   3.9e-12, direct 5.1e-13 / 1.7e-12 / 3.9e-12);
+//   BM_PeerTrace (trace_motion's settings: steps of up to 0.2 rad in any crease, landing,
+//   curved predictor) 100 x 100: 5.4 s against 1.6 s - the iterates move so far that the
+//   factor of one is a poor preconditioner at the next (186 of 325 CG solves hit the cap,
+//   249 factorisations, 21 rejected steps); same error (2.1e-11).
+// An automatic choice needs a cheaper test of when a stale factor will do (e.g. by the step
+// length) before it can be the default.
+constexpr int kPcgUnknowns = std::numeric_limits<int>::max();
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -48,6 +64,7 @@ class Linear {
     auto t0 = Clock::now();
     const int before = solver_.factorizations();
     valid_ = solver_.factorize(J, lambda_relative_);
+    pcg_rate_ = 0.0;
     stats_.factorizations += solver_.factorizations() - before;
     stats_.seconds_factorize += seconds_since(t0);
     if (!valid_) return false;
@@ -66,6 +83,33 @@ class Linear {
     stats_.seconds_solve += seconds_since(t0);
     return d;
   }
+  // The least-squares solution of [J; a^T] dx = [y; c] by CGLS preconditioned with the factor
+  // in use (stale_pcg.hpp). Needs valid().
+  StalePcgResult pcg(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& y, const Eigen::VectorXd& a, double c,
+                     double relative_tolerance, int max_iterations) {
+    const auto t0 = Clock::now();
+    StalePcgOptions o;
+    o.relative_tolerance = relative_tolerance;
+    o.max_iterations = max_iterations;
+    StalePcgResult res = stale_pcg_step(solver_, w_fac_, J, y, a, c, o);
+    ++stats_.pcg_solves;
+    stats_.pcg_iterations += res.iterations;
+    if (!res.converged) ++stats_.pcg_fallbacks;
+    if (res.iterations > 0)
+      pcg_rate_ = res.converged ? std::pow(std::max(res.relative_residual, 1e-300), 1.0 / res.iterations) : 1.0;
+    stats_.seconds_pcg += seconds_since(t0);
+    return res;
+  }
+  // Whether a PCG solve to `relative_tolerance` is expected to converge within max_iterations
+  // with the factor in use: CG's contraction per iteration in the last solve with it predicts
+  // the count (untried since the factorisation: yes). A no counts a predicted renewal.
+  bool pcg_expected(double relative_tolerance, int max_iterations) {
+    if (!valid_) return false;
+    if (pcg_rate_ <= 0.0) return true;
+    const bool ok = pcg_rate_ < 1.0 && std::log(relative_tolerance) / std::log(pcg_rate_) <= max_iterations;
+    if (!ok) ++stats_.pcg_predicted_renewals;
+    return ok;
+  }
   void count_renewal() { ++stats_.renewals; }
   ContinuationStats& stats() { return stats_; }
   bool valid() const { return valid_; }
@@ -77,6 +121,7 @@ class Linear {
   double lambda_relative_;
   ContinuationStats& stats_;
   bool valid_ = false;
+  double pcg_rate_ = 0.0;  // CG contraction per iteration in the last PCG solve with this factor (0: none yet)
   Eigen::SparseMatrix<double> J_fac_;
   Eigen::VectorXd w_fac_;
 };
@@ -88,8 +133,9 @@ struct Corrected {
   int iterations = 0;
   int factorizations = 0;         // refactor() calls in this corrector
   bool converged = false;
-  bool stale_tried = false;       // reuse: stepped with a factorisation from an earlier point
-  bool stale_failed = false;      // ... and it contracted too slowly: restarted from xp, fresh
+  bool stale_tried = false;       // reuse, PCG: stepped with a factorisation from an earlier point
+  bool stale_failed = false;      // ... and it contracted too slowly (reuse: restarted from xp, fresh;
+                                  // PCG: CG did not converge, refactorised)
 };
 
 // Newton on [r(x); t.(x - xk) - h] = 0 from xp. With w the unit null vector of J(x), the
@@ -119,8 +165,14 @@ struct Constraint {
   double offset;
 };
 
+// With pcg (Newton only, not with reuse) each iteration first tries the augmented step by
+// CGLS preconditioned with the factor in use, to a relative tolerance of ||r||_inf clamped to
+// [1e-10, 1e-4] (quadratic convergence kept: the linear error is O(||r||^2)); if it fails to
+// converge within pcg_max_iterations, or the last CG rate predicts that, J is refactorised
+// and the direct step taken. A factor from an earlier point that failed so sets
+// stale_failed (the caller then skips such attempts for a while, as with reuse).
 Corrected correct(Linear& lin, const Constraint& con, const Eigen::VectorXd& t, const Eigen::VectorXd& xp,
-                  const ContinuationOptions& options, bool reuse, bool try_stale) {
+                  const ContinuationOptions& options, bool reuse, bool try_stale, bool pcg) {
   Corrected c;
   c.x = xp;
   Eigen::VectorXd r;
@@ -147,6 +199,19 @@ Corrected correct(Linear& lin, const Constraint& con, const Eigen::VectorXd& t, 
       continue;
     }
     if (!std::isfinite(c.residual)) return c;
+    const double rel = std::clamp(c.residual, 1e-10, 1e-4);
+    // A factor from an earlier point is tried unless one failed lately (try_stale: the same
+    // back-off as the chord's).
+    if (pcg && (own || try_stale) && lin.pcg_expected(rel, options.pcg_max_iterations)) {
+      const StalePcgResult step = lin.pcg(c.J, r, con.a, arc, rel, options.pcg_max_iterations);
+      if (!own) c.stale_tried = true;
+      if (step.converged) {
+        c.x -= step.dx;
+        ++c.iterations;
+        continue;
+      }
+      if (!own) c.stale_failed = true;
+    }
     const bool refactor = !reuse || !lin.valid() || force || (c.iterations > 0 && slow);
     force = false;
     if (refactor) {
@@ -223,7 +288,6 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
   struct Finish {  // total time on every return path
     ContinuationStats& st;
     Clock::time_point t0;
-    ~Finish() { st.seconds_total = seconds_since(t0); }
   } finish{st, t_begin};
   NewtonOptions nopt;
   nopt.tolerance = options.tolerance;
@@ -243,6 +307,9 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
   const bool reuse = options.reuse == FactorizationReuse::kOn ||
                      (options.reuse == FactorizationReuse::kAuto && !rank_revealing);
   out.reused_factorization = reuse;
+  const bool pcg = !reuse && (options.linear_solver == LinearSolver::kPcg ||
+                              (options.linear_solver == LinearSolver::kAuto && system.num_unknowns() >= kPcgUnknowns));
+  out.linear_solver = reuse ? "chord (stale CHOLMOD factor)" : pcg ? "PCG (stale CHOLMOD factor)" : "direct (CHOLMOD)";
   // Small systems: unit null vector from a rank-revealing factorisation, which also checks
   // DOF = 1 (empty if not).
   auto rank_tangent = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
@@ -261,6 +328,20 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
   auto fresh_tangent = [&](const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& guess) -> Eigen::VectorXd {
     if (!lin.refactor(J, guess)) return {};
     return lin.w();
+  };
+  // PCG: the null vector of J at a corrected point from the previous tangent t, w = t - d with
+  // [J; t^T] d = [J t; 0] (so J w = 0, t . w = 1), solved with the factor in use; a fresh
+  // factorisation if that fails.
+  auto pcg_tangent = [&](const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& prev) -> Eigen::VectorXd {
+    constexpr double kTangentTolerance = 1e-8;
+    if (!lin.pcg_expected(kTangentTolerance, options.pcg_max_iterations)) return fresh_tangent(J, prev);
+    const Eigen::VectorXd Jt = J * prev;
+    const StalePcgResult d = lin.pcg(J, Jt, prev, 0.0, kTangentTolerance, options.pcg_max_iterations);
+    if (!d.converged) return fresh_tangent(J, prev);
+    Eigen::VectorXd w = prev - d.dx;
+    const double norm = w.norm();
+    if (!(norm > 0) || !std::isfinite(norm)) return fresh_tangent(J, prev);
+    return w / norm;
   };
   Eigen::VectorXd t = rank_revealing ? rank_tangent(start.x) : fresh_tangent(J0, generic_vector(system.num_unknowns()));
   if (t.size() == 0) {
@@ -323,8 +404,8 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     }
     const Corrected c = landing >= 0
                             ? correct(lin, Constraint{e_land, xk, land[next_land] - xk[land_k]}, t, xp, options, reuse,
-                                      stale_wait == 0)
-                            : correct(lin, Constraint{t, xk, h}, t, xp, options, reuse, stale_wait == 0);
+                                      stale_wait == 0, pcg)
+                            : correct(lin, Constraint{t, xk, h}, t, xp, options, reuse, stale_wait == 0, pcg);
     st.corrector_iterations += c.iterations;
     if (c.stale_failed) {
       stale_skip = std::min(std::max(1, 2 * stale_skip), 16);
@@ -340,6 +421,8 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
         t_new = rank_tangent(c.x);
       else if (reuse)
         t_new = project_tangent(lin, c.J, t);
+      else if (pcg)
+        t_new = pcg_tangent(c.J, t);
       else  // Newton: the null vector of the last corrector step (at an iterate within about
             // the previous residual of c.x), accurate enough for a predictor and the turn test
         t_new = c.factorizations > 0 ? lin.w() : fresh_tangent(c.J, t);

@@ -13,7 +13,8 @@
 // by 1.5 after a corrector that converges in <= 3 iterations (reuse: in <= 5 without a
 // factorisation) and is halved after a failure
 // (not converged, or the DOF at the new point is not 1, or the tangent turned by more than
-// 0.5 rad).
+// 0.5 rad). Opt-in for large systems: the Newton step by PCG with a stale factor instead
+// (LinearSolver, ContinuationOptions::linear_solver).
 //
 // Factorisation reuse (ContinuationOptions::reuse): a chord (modified-Newton) corrector that
 // keeps the last factorisation, its Jacobian J_fac and null vector w_fac across corrector
@@ -50,6 +51,21 @@ namespace rigidfold {
 // kRankRevealingLimit (2000) unknowns, Newton below.
 enum class FactorizationReuse { kAuto, kOn, kOff };
 
+// The linear solver of the Newton corrector (not of the chord corrector, which has its own
+// stale-factor iteration). kDirect: a fresh CHOLMOD factorisation of J^T J + lambda I at every
+// Newton iteration, the step and the tangent from it. kPcg: the same Newton step, by CGLS
+// preconditioned with the factorisation in use even if it was made at an earlier iterate or
+// point (stale_pcg.hpp), to a relative tolerance of ||r||_inf clamped to [1e-10, 1e-4]: the
+// linear error is then O(||r||^2) and Newton stays quadratic, its last step ending far below
+// the tolerance as the direct one does. A fresh factorisation at the current iterate (with
+// the direct step) replaces the CG solve when CG does not converge in pcg_max_iterations or
+// the rate of the last CG solve predicts it would not; it is the next preconditioner. The
+// tangent at an accepted point: w = t - d with [J; t^T] d = [J t; 0] (J w = 0) by the same
+// solve, to 1e-8 relative (it only feeds the predictor and the step's constraint row).
+// kAuto: kDirect for now (kPcg is faster on Miura traces of small steps, 100 x 100 and 200 x
+// 200, but 3.4x slower at the trace command's 0.2-rad steps: continuation.cpp has the figures).
+enum class LinearSolver { kAuto, kDirect, kPcg };
+
 struct ContinuationOptions {
   double initial_step = 0.05;   // h at the start (radians of arclength)
   double min_step = 1e-8;       // give up below this
@@ -81,6 +97,8 @@ struct ContinuationOptions {
   bool curved_predictor = false;
   int landing_unknown = -1;
   std::vector<double> landing_values;
+  LinearSolver linear_solver = LinearSolver::kAuto;  // Newton corrector only (reuse off)
+  int pcg_max_iterations = 8;                        // kPcg: CG iterations before a refactorisation
 };
 
 // Work done by one continue_one_dof call (all attempts, rejected steps and the start's
@@ -97,6 +115,13 @@ struct ContinuationStats {
   int tangent_renewals = 0;       // reuse: tangent projections that stalled and refactorised
   int corrector_iterations = 0;
   int rejected_steps = 0;
+  int pcg_solves = 0;             // kPcg: preconditioned CGLS solves (corrector steps and tangents)
+  int pcg_iterations = 0;         // kPcg: their CG iterations (one pair of triangular solves each)
+  int pcg_fallbacks = 0;          // kPcg: solves that did not converge in pcg_max_iterations (a
+                                  // fresh factorisation followed)
+  int pcg_predicted_renewals = 0; // kPcg: fresh factorisations instead of a PCG solve whose CG count,
+                                  // predicted from the last solve's rate, would exceed the cap
+  double seconds_pcg = 0.0;
   double seconds_factorize = 0.0, seconds_solve = 0.0, seconds_null_vector = 0.0, seconds_evaluate = 0.0,
          seconds_rank = 0.0, seconds_start = 0.0, seconds_total = 0.0;
 };
@@ -114,6 +139,9 @@ struct ContinuationResult {
   bool stopped = false;                   // `stop` returned true at the last point
   std::string reason;                     // "stop", "max_points", "step too small", "start not on manifold", "not 1 DOF"
   bool reused_factorization = false;      // the chord corrector was used (options.reuse resolved)
+  // The corrector's linear solver (options.reuse and linear_solver resolved): "direct
+  // (CHOLMOD)", "PCG (stale CHOLMOD factor)" or "chord (stale CHOLMOD factor)".
+  std::string linear_solver;
   ContinuationStats stats;
 };
 

@@ -171,6 +171,9 @@ MinimumNormSolver::MinimumNormSolver(const Eigen::SparseMatrix<double>& J, const
 
 MinimumNormSolver::~MinimumNormSolver() = default;
 
+int MinimumNormSolver::unknowns() const { return impl_->n; }
+int MinimumNormSolver::kept_unknowns() const { return impl_->nf; }
+
 bool MinimumNormSolver::factorize(const Eigen::SparseMatrix<double>& J, double lambda_relative) {
   Impl& s = *impl_;
   double* gv = s.G.valuePtr();

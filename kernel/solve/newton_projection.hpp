@@ -99,6 +99,8 @@ class MinimumNormSolver {
   Eigen::MatrixXd inverse_times(const Eigen::MatrixXd& V) const;
 
   double lambda() const { return lambda_; }
+  int unknowns() const;       // n, the Jacobian's columns
+  int kept_unknowns() const;  // n minus the held unknowns
   int factorizations() const { return factorizations_; }
   int symbolic_analyses() const { return symbolic_analyses_; }
 

@@ -128,7 +128,8 @@ struct TraceCheck {
 };
 
 // Steps of equal arclength: about `steps` of them from start to target.
-TraceCheck trace_miura(int n, double target_deg, double steps, FactorizationReuse reuse) {
+TraceCheck trace_miura(int n, double target_deg, double steps, FactorizationReuse reuse,
+                       LinearSolver linear_solver = LinearSolver::kAuto, int pcg_max_iterations = 8) {
   generators::MiuraParams m;
   m.rows = m.cols = n;
   m.alpha = 1.1;
@@ -143,6 +144,8 @@ TraceCheck trace_miura(int n, double target_deg, double steps, FactorizationReus
   opt.initial_step = opt.max_step =
       (sys.unknowns_from_edges(miura_edge_angles(p, m, target)) - x0).norm() / steps;
   opt.reuse = reuse;
+  opt.linear_solver = linear_solver;
+  opt.pcg_max_iterations = pcg_max_iterations;
   TraceCheck tc;
   const auto t0 = std::chrono::steady_clock::now();
   tc.result = continue_one_dof(sys, x0, dir, [&](const Eigen::VectorXd& x) { return x[driver] >= target; }, opt);
@@ -171,7 +174,9 @@ void print(const char* name, const TraceCheck& tc) {
             << " solves, " << s.null_vectors << " null vectors, " << s.corrector_iterations << " corrector iterations, "
             << s.renewals << " renewals (" << s.stale_restarts << " stale restarts, " << s.tangent_renewals
             << " tangent), " << s.rejected_steps << " rejected, worst residual " << tc.worst_residual << ", worst |x - closed form| "
-            << tc.worst_error << ", " << tc.ms << " ms\n";
+            << tc.worst_error << ", " << tc.ms << " ms, " << tc.result.linear_solver << " (" << s.pcg_solves
+            << " PCG solves, " << s.pcg_iterations << " CG iterations, " << s.pcg_fallbacks << " fallbacks, "
+            << s.pcg_predicted_renewals << " predicted renewals)\n";
 }
 
 // 40 x 40 cells (above the 2000-unknown rank-revealing limit, so kAuto picks reuse): the
@@ -179,7 +184,7 @@ void print(const char* name, const TraceCheck& tc) {
 // fewer factorisations (about 1.6 against 2.9 per step here).
 TEST(SolverContinuation, ReuseOnLargeMiuraMatchesNewtonWithFewerFactorizations) {
   const TraceCheck on = trace_miura(40, 120, 40, FactorizationReuse::kAuto);
-  const TraceCheck off = trace_miura(40, 120, 40, FactorizationReuse::kOff);
+  const TraceCheck off = trace_miura(40, 120, 40, FactorizationReuse::kOff, LinearSolver::kDirect);
   print("miura 40x40 reuse (auto)", on);
   print("miura 40x40 newton", off);
   EXPECT_TRUE(on.result.reused_factorization);
@@ -211,6 +216,45 @@ TEST(SolverContinuation, ReuseForcedOnSmallMiuraMatchesNewton) {
   EXPECT_LE(on.worst_error, 1e-10);
   EXPECT_LE(off.worst_error, 1e-10);
   EXPECT_LT(on.result.stats.factorizations, off.result.stats.factorizations);
+}
+
+// The Newton corrector with the stale-factor PCG step (LinearSolver::kPcg) on a 40 x 40
+// Miura: every point within the tolerance (trace_miura) and 1e-10 rad of the closed form, as
+// the direct Newton corrector, with fewer factorisations (CG solves in their place).
+TEST(SolverContinuation, PcgCorrectorOnLargeMiuraMatchesClosedForm) {
+  const TraceCheck pcg = trace_miura(40, 120, 40, FactorizationReuse::kOff, LinearSolver::kPcg);
+  const TraceCheck direct = trace_miura(40, 120, 40, FactorizationReuse::kOff, LinearSolver::kDirect);
+  print("miura 40x40 newton, PCG", pcg);
+  print("miura 40x40 newton, direct", direct);
+  EXPECT_EQ(pcg.result.linear_solver, "PCG (stale CHOLMOD factor)");
+  EXPECT_EQ(direct.result.linear_solver, "direct (CHOLMOD)");
+  EXPECT_FALSE(pcg.result.reused_factorization);
+  EXPECT_LE(pcg.worst_error, 1e-10);
+  EXPECT_LE(direct.worst_error, 1e-10);
+  EXPECT_EQ(pcg.result.points.size(), direct.result.points.size());
+  EXPECT_GT(pcg.result.stats.pcg_solves, 0);
+  EXPECT_GT(pcg.result.stats.pcg_iterations, pcg.result.stats.pcg_solves);
+  EXPECT_EQ(direct.result.stats.pcg_solves, 0);
+  EXPECT_LT(pcg.result.stats.factorizations, direct.result.stats.factorizations);
+}
+
+// A cap of one CG iteration: most PCG solves fail and fall back to a fresh factorisation
+// (and the direct step); the trace is as accurate as ever.
+TEST(SolverContinuation, PcgFallsBackToAFreshFactorization) {
+  const TraceCheck tc = trace_miura(40, 60, 20, FactorizationReuse::kOff, LinearSolver::kPcg, 1);
+  print("miura 40x40 newton, PCG capped at 1 iteration", tc);
+  EXPECT_GT(tc.result.stats.pcg_fallbacks, 0);
+  EXPECT_LE(tc.worst_error, 1e-10);
+}
+
+// The chord corrector reports itself whatever linear_solver says; kAuto stays direct on a
+// small system.
+TEST(SolverContinuation, ReportsTheLinearSolverInUse) {
+  const TraceCheck chord = trace_miura(8, 30, 5, FactorizationReuse::kOn, LinearSolver::kPcg);
+  EXPECT_EQ(chord.result.linear_solver, "chord (stale CHOLMOD factor)");
+  EXPECT_EQ(chord.result.stats.pcg_solves, 0);
+  const TraceCheck small = trace_miura(8, 30, 5, FactorizationReuse::kOff, LinearSolver::kAuto);
+  EXPECT_EQ(small.result.linear_solver, "direct (CHOLMOD)");
 }
 
 }  // namespace
