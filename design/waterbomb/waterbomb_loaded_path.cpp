@@ -89,29 +89,37 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
       // Natural continuation in the height from the flat state along the chosen ray.
       const FlatBranch& ray = out.flat_crossing.branches[out.flat_crossing.taken];
       const Eigen::VectorXd ray_x = sys.unknowns_from_edges(ray.direction);
+      // Predictor: secant in the angle t = acos(h / r) that parametrises the height (not the
+      // closed form): the fold angles are smooth in t up to the limit, while near theta -> pi
+      // dh/dt = -r sin t -> 0 and a secant in h overshoots.
       Eigen::VectorXd x_prev = Eigen::VectorXd::Zero(sys.num_unknowns()), x_prev2 = x_prev;
-      double h_prev = 0.0, h_prev2 = 0.0;
+      double h_prev = 0.0, t_prev = kPi / 2, t_prev2 = kPi / 2;
       bool first = true, failed = false;
       const double max_dh = LoadedPathOptions::kMaxHeightStep * r;
       auto step_to = [&](double th, bool sample) -> LoadedPoint {
         const double h = r * std::cos(th);
         const Eigen::VectorXd start =
             first ? Eigen::VectorXd(ray_x * (h / ray.height_rate))
-                  : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((h - h_prev) / (h_prev - h_prev2)));
+                  : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((th - t_prev) / (t_prev - t_prev2)));
         const LoadedPoint q = solve(th, start, sample);
         if (q.converged) {
           x_prev2 = x_prev;
-          h_prev2 = h_prev;
+          t_prev2 = t_prev;
           x_prev = last_x;
           h_prev = h;
+          t_prev = th;
           first = false;
         }
         return q;
       };
       for (std::size_t i : far) {
-        const double h = r * std::cos(thetas[i]);
-        while (!failed && h_prev - h > max_dh)
-          if (!step_to(std::acos(std::clamp((h_prev - max_dh) / r, -1.0, 1.0)), false).converged) failed = true;
+        // Hidden steps: at most kMaxHeightStep * r in height and kMaxAngleStep in t.
+        while (!failed) {
+          const double next = std::min({thetas[i], std::acos(std::clamp((h_prev - max_dh) / r, -1.0, 1.0)),
+                                        t_prev + LoadedPathOptions::kMaxAngleStep});
+          if (next >= thetas[i]) break;
+          if (!step_to(next, false).converged) failed = true;
+        }
         if (!failed) {
           out.points[i] = step_to(thetas[i], true);
           failed = !out.points[i].converged;

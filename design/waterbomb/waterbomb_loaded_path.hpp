@@ -13,8 +13,9 @@
 // start from the symmetric closed form at their theta. The far side is reached by
 // continuation from the flat state along the one branch of its tangent cone that keeps the
 // M/V letters (waterbomb_flat_crossing.hpp): the first start is that ray to first order, the
-// next ones a secant predictor in the height, with hidden steps of at most kMaxHeightStep * r
-// between samples. No such branch (or more than one): the far-side samples are returned
+// next ones a secant predictor in t = acos(h / r) (the height's angle, smooth up to the limit
+// where h itself flattens), with hidden steps of at most kMaxHeightStep * r in height and
+// kMaxAngleStep in t between samples. No such branch (or more than one): the far-side samples are returned
 // unconverged and `stopped_at_flat` says why. The closed form is compared, never used, there.
 #include <string>
 #include <vector>
@@ -54,6 +55,7 @@ struct LoadedPathOptions {
   // when no cone branch keeps the letters.
   std::vector<int> flipped_letters;
   static constexpr double kMaxHeightStep = 0.1;  // far-side continuation step, times r
+  static constexpr double kMaxAngleStep = 0.1;   // and in t = acos(h / r), radians
 };
 
 // Inputs: n >= 3, theta0, k_m, k_v as waterbomb_bistability; thetas (radians) in

@@ -37,5 +37,21 @@ TEST(WaterbombLoadedPath, ForceMatchesVirtualWorkAndStabilityChangesAreLocated) 
   }
 }
 
+// Next to the far limit (theta -> 180 - 180/n) the height flattens (dh/dtheta = -r sin theta):
+// the continuation's predictor is a secant in acos(h / r), with hidden steps bounded in it, so
+// the sample 1e-3 of the range from the limit is reached and lands on the closed form (a
+// secant in h overshot there and the n = 60 curve stopped before it).
+TEST(WaterbombLoadedPath, ContinuationReachesTheFarLimit) {
+  const int n = 60;
+  const double limit = kPi - kPi / n;
+  const double theta = limit - 1e-3 * limit;
+  const auto path = waterbomb::waterbomb_loaded_path(n, to_radians(60.0), 1.0, 1.0, {theta});
+  ASSERT_FALSE(path.stopped_at_flat) << path.stop_message;
+  EXPECT_TRUE(path.stop_message.empty()) << path.stop_message;
+  ASSERT_TRUE(path.points[0].converged);
+  EXPECT_LE(path.points[0].fold_angle_gap, 1e-9);
+  EXPECT_NEAR(path.points[0].force, path.points[0].force_closed_form, 1e-9 * std::max(1.0, std::fabs(path.points[0].force_closed_form)));
+}
+
 }  // namespace
 }  // namespace rigidfold
