@@ -280,6 +280,29 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
           best = ar.x;
         }
       }
+      // Polish the best point when no bound holds it off the manifold (header, step 5).
+      if (candidates.empty() && best.size() == n && ev.least_residual <= opt.polish_residual) {
+        NewtonOptions popt;
+        popt.tolerance = opt.tolerances.residual;
+        popt.max_iterations = opt.polish_iterations;
+        // Creases the search left on their bound (flat, against the side their letter
+        // forbids) stay there: the polished point is then a weakly folded state.
+        for (int i = 0; i < n; ++i)
+          if (bounds[i] != 0 && best[i] == 0.0) popt.held_unknowns.push_back(i);
+        const NewtonResult pr = newton_project(sys, best, popt);
+        ++out.starts_tried;
+        ev.polished = true;
+        // A candidate only if it kept most of its size: Newton can slide a point of a rigid
+        // pattern back to (next to) the flat state, which keeps every letter trivially.
+        if (pr.converged && pr.x.norm() >= 0.5 * eps &&
+            first_crease_against_letter(sign, sys.edges_from_unknowns(pr.x), opt.tolerances.sign_threshold) < 0) {
+          ++out.starts_converged;
+          ev.polish_converged = true;
+          Eigen::Index k = 0;
+          pr.x.cwiseAbs().maxCoeff(&k);
+          candidates.push_back({pr.x, sys.edge_of_unknown(static_cast<int>(k))});
+        }
+      }
       if (out.evidence.empty()) evidence_x = best;  // the largest amplitude's: worst vertices
       out.evidence.push_back(ev);
       best_x.push_back(best);

@@ -41,7 +41,15 @@
 //     a candidate (traced as in 3-4). Then, at the same amplitude, the norm search
 //     (amplitude_search: ||x||_2 = eps over all unknowns, letters as bounds, no crease held)
 //     from norm_search_starts starts; a converged point with its letters kept is a candidate
-//     too. Otherwise the least residual per amplitude (both searches) is the evidence, and
+//     too. Both searches can stop just short of the tolerance at a point where no bound is
+//     active, or with creases on their bound (Resch's triangle tessellation: 2.9e-11 rad at 0.1 rad after the norm search's
+//     iterations); so the best point of the amplitude, when its residual is at most
+//     polish_residual, is polished by Newton projection (minimum-norm steps, which move it
+//     by about residual / sigma_min; the creases it left on their bound held flat, so the
+//     polished point is then a weakly folded state), and it is a candidate when it converges
+//     with its letters kept and at least half its size (eps / 2: on a rigid pattern Newton
+//     may slide back to the flat state, which breaks no letter).
+//     Otherwise the least residual per amplitude (both searches) is the evidence, and
 //       - kNotRigidlyFoldable (numerical evidence, is_proof false) only when the least
 //         residual at the largest amplitude is at least tolerances.evidence_floor AND it
 //         grows with the amplitude like an obstruction, residual ~ eps^p with
@@ -102,6 +110,10 @@ struct GeneralVerdictOptions {
   // driving creases flat.
   int norm_search_starts = 2;
   int norm_search_iterations = 80;
+  // ... and the best point of an amplitude, when its closure residual is at most this
+  // (radians), is polished by Newton projection without bounds (header, step 5).
+  double polish_residual = 1e-6;
+  int polish_iterations = 20;
   // The user's bound on each coordinate (input_precision; nullopt: read off the digits),
   // for the rounding test of step 5.
   std::optional<double> coordinate_tolerance;
@@ -133,6 +145,8 @@ struct AmplitudeEvidence {
   // (rounding_residual_bound.hpp).
   bool explained_by_rounding = false;
   double rounding_ratio = -1.0;  // max over vertices of gap / that bound (<= 1: explained)
+  bool polished = false;         // the best point was polished by Newton projection (step 5)
+  bool polish_converged = false; // ... and closed with its letters kept: a candidate
 };
 
 // Which lettered creases a certificate leaves flat: strict foldability folds every one of
