@@ -19,6 +19,7 @@
 #include "kernel/energy/vertex_height_control.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "tests/waterbomb/stopped_curve_expectations.hpp"
 
 namespace rigidfold::waterbomb {
 namespace {
@@ -145,21 +146,8 @@ TEST(WaterbombFlatCrossing, FlippedLetterStopsTheCurveAtFlat) {
   LoadedPathOptions opt;
   opt.flipped_letters = {1};
   const WaterbombCurve curve = waterbomb_curve(4, to_radians(60.0), 1.0, 1.0, 9, opt);
-  EXPECT_TRUE(curve.stopped_at_flat);
   EXPECT_EQ(curve.stop_message, c.message);
-  int near = 0, far = 0;
-  for (const CurveSample& s : curve.samples) {
-    if (s.theta < kPi / 2) {
-      EXPECT_TRUE(s.checked);
-      ++near;
-    } else {
-      EXPECT_FALSE(s.checked);
-      ++far;
-    }
-  }
-  EXPECT_GT(near, 0);
-  EXPECT_GT(far, 0);
-  EXPECT_EQ(curve.unchecked, far);
+  test::expect_only_the_near_side_checked(curve);
 }
 
 }  // namespace
