@@ -224,7 +224,7 @@ Json foldability_json(const FoldabilityReport& r) {
                   {"explained_by_rounding", e.explained_by_rounding}};
       if (e.norm_search_residual >= 0) one["norm_search_residual_rad"] = e.norm_search_residual;
       if (e.rounding_ratio >= 0) one["rounding_ratio"] = e.rounding_ratio;
-      if (e.polished) one["polished_by_newton"] = e.polish_converged ? "converged, letters kept" : "not converged";
+      if (e.polished) one["newton_polish"] = e.polish_outcome;
       ev.push_back(std::move(one));
     }
     j["search_evidence"] = {{"sign_respecting_least_squares", ev},

@@ -294,8 +294,14 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
         ev.polished = true;
         // A candidate only if it kept most of its size: Newton can slide a point of a rigid
         // pattern back to (next to) the flat state, which keeps every letter trivially.
-        if (pr.converged && pr.x.norm() >= 0.5 * eps &&
-            first_crease_against_letter(sign, sys.edges_from_unknowns(pr.x), opt.tolerances.sign_threshold) < 0) {
+        const bool kept_size = pr.x.norm() >= 0.5 * eps;
+        const bool kept_letters =
+            first_crease_against_letter(sign, sys.edges_from_unknowns(pr.x), opt.tolerances.sign_threshold) < 0;
+        ev.polish_outcome = !pr.converged ? "did not close"
+                            : !kept_size  ? "closed, but slid toward the flat state (size below half the amplitude)"
+                            : !kept_letters ? "closed against a letter"
+                                            : "closed with its letters kept: a candidate";
+        if (pr.converged && kept_size && kept_letters) {
           ++out.starts_converged;
           ev.polish_converged = true;
           Eigen::Index k = 0;

@@ -147,6 +147,7 @@ struct AmplitudeEvidence {
   double rounding_ratio = -1.0;  // max over vertices of gap / that bound (<= 1: explained)
   bool polished = false;         // the best point was polished by Newton projection (step 5)
   bool polish_converged = false; // ... and closed with its letters kept: a candidate
+  std::string polish_outcome;    // what the polish ended with, in words (empty: not polished)
 };
 
 // Which lettered creases a certificate leaves flat: strict foldability folds every one of
