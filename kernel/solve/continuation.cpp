@@ -285,9 +285,10 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
   const auto t_begin = Clock::now();
   ContinuationResult out;
   ContinuationStats& st = out.stats;
-  struct Finish {  // total time on every return path
+  struct Finish {  // total time on every return path (every one returns `out` itself)
     ContinuationStats& st;
     Clock::time_point t0;
+    ~Finish() { st.seconds_total = seconds_since(t0); }
   } finish{st, t_begin};
   NewtonOptions nopt;
   nopt.tolerance = options.tolerance;
