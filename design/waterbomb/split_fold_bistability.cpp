@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "design/waterbomb/flat_branch_continuation.hpp"
 #include "design/waterbomb/waterbomb_switching.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/constrained_equilibrium.hpp"
@@ -416,7 +417,8 @@ SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, doub
   const double r = model.r;
   SplitFoldCurve out;
 
-  // Far side: the branch through flat from the tangent cone of the symmetric closure system.
+  // Far side: the branch through flat from the tangent cone of the symmetric closure system,
+  // continued from the flat state along it (flat_branch_continuation.hpp).
   Eigen::VectorXd ray_x;
   double ray_rate = 0.0;
   if (thetas.back() > kPi / 2) {
@@ -434,36 +436,21 @@ SplitFoldCurve split_fold_curve(int n, double b, double theta0, double k_m, doub
       out.stop_message = out.flat_crossing.message;
     }
   }
-  // Natural continuation in the height from the flat state (x = 0, h = 0) along the ray.
-  Eigen::VectorXd x_prev = Eigen::VectorXd::Zero(model.system.num_unknowns()), x_prev2 = x_prev;
-  double h_prev = 0.0, h_prev2 = 0.0;
-  bool first = true, failed = false;
-  auto step_to = [&](double h, bool sample) {
-    const Eigen::VectorXd start = first ? Eigen::VectorXd(ray_x * (h / ray_rate))
-                                        : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((h - h_prev) / (h_prev - h_prev2)));
-    const HeightControlledEquilibrium eq = model.loaded_from(h, start, sample);
-    if (eq.converged) {
-      x_prev2 = x_prev;
-      h_prev2 = h_prev;
-      x_prev = eq.x;
-      h_prev = h;
-      first = false;
-    } else {
-      failed = true;
-    }
-    return eq;
-  };
-  const double max_dh = SplitFoldCurveOptions::kMaxHeightStep * r;
+  HeightControlledEquilibrium sampled;
+  FlatBranchContinuation continuation(ray_x, ray_rate, r, SplitFoldCurveOptions::kMaxHeightStep,
+                                      SplitFoldCurveOptions::kMaxAngleStep,
+                                      [&](double th, const Eigen::VectorXd& start, bool sample) {
+                                        sampled = model.loaded_from(r * std::cos(th), start, sample);
+                                        return FlatBranchSolve{sampled.converged, sampled.x};
+                                      });
 
   for (double th : thetas) {
     CurveSample c;
     c.theta = th;
     HeightControlledEquilibrium eq;
     if (th > kPi / 2) {
-      const double h = r * std::cos(th);
-      while (!out.stopped_at_flat && !failed && h_prev - h > max_dh) step_to(h_prev - max_dh, false);
-      if (!out.stopped_at_flat && !failed) eq = step_to(h, true);
-      if (failed && out.stop_message.empty())
+      if (!out.stopped_at_flat && !continuation.failed() && continuation.advance_to(th).converged) eq = sampled;
+      if (continuation.failed() && out.stop_message.empty())
         out.stop_message = "the continuation from the flat state did not converge before theta = " +
                            round_trip_text(to_degrees(th)) + " deg";
       if (!eq.converged) {  // no solution on the chosen branch: nothing to check or show

@@ -138,8 +138,9 @@ std::vector<std::vector<int>> split_fold_motion_classes(int n);
 // Far side of flat (theta > pi/2) the curve is reached by continuation from the flat state
 // along the one branch of its tangent cone that keeps the M/V letters
 // (waterbomb_flat_crossing.hpp with split_fold_motion_classes, supports the half-valleys): the
-// first start is that ray to first order, the next a secant predictor in the height, with
-// hidden steps of at most kMaxHeightStep * r between samples. The printed forms are compared
+// first start is that ray to first order, the next a secant predictor in theta, with hidden
+// steps of at most kMaxHeightStep * r in height and kMaxAngleStep in theta between samples
+// (flat_branch_continuation.hpp, shared with the plain base's loaded path). The printed forms are compared
 // there (the checks above), never used as a start. No such branch, or more than one: the
 // far-side samples are unchecked and stopped_at_flat says why.
 struct SplitFoldCurveOptions {
@@ -147,6 +148,7 @@ struct SplitFoldCurveOptions {
   // (the springs keep the base's letters): to ask what happens when no branch keeps them.
   std::vector<int> flipped_letters;
   static constexpr double kMaxHeightStep = 0.1;  // far-side continuation step, times r
+  static constexpr double kMaxAngleStep = 0.1;   // and in theta, radians
 };
 
 struct SplitFoldCurve {

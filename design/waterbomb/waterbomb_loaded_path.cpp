@@ -6,6 +6,7 @@
 #include <string>
 
 #include "data/generators/waterbomb.hpp"
+#include "design/waterbomb/flat_branch_continuation.hpp"
 #include "design/waterbomb/waterbomb_force.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/energy/crease_stiffness.hpp"
@@ -86,44 +87,25 @@ LoadedPath waterbomb_loaded_path(int n, double theta0, double k_m, double k_v, c
       out.stopped_at_flat = true;
       out.stop_message = out.flat_crossing.message;
     } else {
-      // Natural continuation in the height from the flat state along the chosen ray.
+      // Natural continuation from the flat state along the chosen ray (flat_branch_continuation.hpp).
       const FlatBranch& ray = out.flat_crossing.branches[out.flat_crossing.taken];
-      const Eigen::VectorXd ray_x = sys.unknowns_from_edges(ray.direction);
-      // Predictor: secant in the angle t = acos(h / r) that parametrises the height (not the
-      // closed form): the fold angles are smooth in t up to the limit, while near theta -> pi
-      // dh/dt = -r sin t -> 0 and a secant in h overshoots.
-      Eigen::VectorXd x_prev = Eigen::VectorXd::Zero(sys.num_unknowns()), x_prev2 = x_prev;
-      double h_prev = 0.0, t_prev = kPi / 2, t_prev2 = kPi / 2;
-      bool first = true, failed = false;
-      const double max_dh = LoadedPathOptions::kMaxHeightStep * r;
-      auto step_to = [&](double th, bool sample) -> LoadedPoint {
-        const double h = r * std::cos(th);
-        const Eigen::VectorXd start =
-            first ? Eigen::VectorXd(ray_x * (h / ray.height_rate))
-                  : Eigen::VectorXd(x_prev + (x_prev - x_prev2) * ((th - t_prev) / (t_prev - t_prev2)));
-        const LoadedPoint q = solve(th, start, sample);
-        if (q.converged) {
-          x_prev2 = x_prev;
-          t_prev2 = t_prev;
-          x_prev = last_x;
-          h_prev = h;
-          t_prev = th;
-          first = false;
-        }
-        return q;
-      };
+      LoadedPoint sampled;
+      FlatBranchContinuation continuation(
+          sys.unknowns_from_edges(ray.direction), ray.height_rate, r, LoadedPathOptions::kMaxHeightStep,
+          LoadedPathOptions::kMaxAngleStep, [&](double th, const Eigen::VectorXd& start, bool sample) {
+            sampled = solve(th, start, sample);
+            return FlatBranchSolve{sampled.converged, last_x};
+          });
+      bool failed = false;
       for (std::size_t i : far) {
-        // Hidden steps: at most kMaxHeightStep * r in height and kMaxAngleStep in t.
-        while (!failed) {
-          const double next = std::min({thetas[i], std::acos(std::clamp((h_prev - max_dh) / r, -1.0, 1.0)),
-                                        t_prev + LoadedPathOptions::kMaxAngleStep});
-          if (next >= thetas[i]) break;
-          if (!step_to(next, false).converged) failed = true;
-        }
         if (!failed) {
-          out.points[i] = step_to(thetas[i], true);
-          failed = !out.points[i].converged;
-          xs[i] = last_x;
+          failed = !continuation.advance_to(thetas[i]).converged;
+          if (!failed) {
+            out.points[i] = sampled;
+            xs[i] = last_x;
+          } else if (sampled.theta == thetas[i]) {
+            out.points[i] = sampled;  // the sample itself did not converge: its unconverged point
+          }
         }
         if (failed && out.stop_message.empty())
           out.stop_message = "the continuation from the flat state did not converge before theta = " +
