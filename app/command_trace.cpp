@@ -141,6 +141,9 @@ Json branch_json(const MotionBranch& b, const CreasePattern& p) {
   j["stopped_by"] = b.stopped_by;
   j["max_residual"] = b.max_residual;
   j["max_mismatch"] = to_file_units(p, b.max_mismatch);  // the file's length units
+  // The general solver's corrector (null: the branch did not run its continuation).
+  j["linear_solver"] = b.linear_solver.empty() ? Json(nullptr) : Json(b.linear_solver);
+  if (!b.linear_solver.empty()) j["factorizations"] = b.continuation.factorizations;
   Json ev = Json::array();
   for (const MotionEvent& e : b.events)
     ev.push_back({{"step", e.step}, {"kind", to_string(e.kind)}, {"edge", e.edge}, {"drive_deg", to_degrees(e.drive)},

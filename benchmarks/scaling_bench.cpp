@@ -134,10 +134,7 @@ void BM_Corrector(benchmark::State& state) {
 }
 
 // Work counters of a continue_one_dof call (ContinuationStats), per run.
-void continuation_counters(benchmark::State& state, const ContinuationResult& res) {
-  const ContinuationStats& st = res.stats;
-  const double steps = std::max<double>(1.0, static_cast<double>(res.points.size()) - 1);
-  state.counters["reuse"] = res.reused_factorization;
+void stats_counters(benchmark::State& state, const ContinuationStats& st, double steps) {
   state.counters["factorizations"] = st.factorizations;
   state.counters["fact_per_step"] = st.factorizations / steps;
   state.counters["solves"] = st.solves;
@@ -157,15 +154,22 @@ void continuation_counters(benchmark::State& state, const ContinuationResult& re
   state.counters["pcg_fallbacks"] = st.pcg_fallbacks;
   state.counters["pcg_predicted"] = st.pcg_predicted_renewals;
   state.counters["s_pcg"] = st.seconds_pcg;
+}
+
+void continuation_counters(benchmark::State& state, const ContinuationResult& res) {
+  const double steps = std::max<double>(1.0, static_cast<double>(res.points.size()) - 1);
+  state.counters["reuse"] = res.reused_factorization;
+  stats_counters(state, res.stats, steps);
   state.SetLabel(res.linear_solver);
 }
 
 // range(1) of the continuation benchmarks: 1 = factorisation reuse (chord corrector), 0 =
 // Newton with a fresh factorisation per iteration (LinearSolver::kDirect), 2 = Newton with the
-// stale-factor PCG step (LinearSolver::kPcg).
+// stale-factor PCG step (LinearSolver::kPcg), 3 = the automatic choice (LinearSolver::kAuto:
+// PCG above 2000 unknowns while it pays).
 void set_corrector(ContinuationOptions& o, int64_t mode) {
   o.reuse = mode == 1 ? FactorizationReuse::kOn : FactorizationReuse::kOff;
-  o.linear_solver = mode == 2 ? LinearSolver::kPcg : LinearSolver::kDirect;
+  o.linear_solver = mode == 2 ? LinearSolver::kPcg : mode == 3 ? LinearSolver::kAuto : LinearSolver::kDirect;
 }
 
 // One continuation step (predictor + corrector + tangent) from the closed form; range(1) as
@@ -371,6 +375,8 @@ void BM_PeerTrace(benchmark::State& state) {
   state.counters["reached_deg"] = to_degrees(std::fabs(b.reached));
   state.counters["residual"] = b.max_residual;
   state.counters["error_vs_closed_form"] = worst;
+  stats_counters(state, b.continuation, std::max<std::size_t>(1, b.continuation_points));
+  state.SetLabel(b.linear_solver);
   finish(state, c.pattern);
 }
 
@@ -427,13 +433,13 @@ void register_all() {
     add("BM_Corrector", BM_Corrector)->Args({mid, ord, 12});
   }
   for (int tol : {6, 8, 10}) add("BM_Corrector", BM_Corrector)->Args({mid, 0, tol});
-  // Traces, range(1): 1 = factorisation reuse, 0 = Newton (direct), 2 = Newton (PCG; from
-  // 40 x 40 up only). Up to 2000 unknowns the continuation checks DOF = 1 at every point (dense
+  // Traces, range(1): 1 = factorisation reuse, 0 = Newton (direct), 2 = Newton (PCG), 3 = the
+  // automatic choice (2 and 3 from 40 x 40 up only). Up to 2000 unknowns the continuation checks DOF = 1 at every point (dense
   // SVD up to 200 unknowns, the factor subspace above: n = 30 took minutes with the dense SVD
   // it used before).
   for (int n : {10, 30, 40, 100, 200})
-    for (int mode : {1, 0, 2})
-      if (mode != 2 || n >= 40) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
+    for (int mode : {1, 0, 2, 3})
+      if (mode < 2 || n >= 40) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
   if (large >= 1)
     for (int n : {160, 320})
       for (int mode : {1, 0, 2}) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);

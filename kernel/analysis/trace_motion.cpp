@@ -230,6 +230,9 @@ class GeneralTracer {
     for (int k = 1; k <= rq_.steps; ++k)
       if (std::fabs(b_.to * k / rq_.steps) < fold_limit) copt.landing_values.push_back(b_.to * k / rq_.steps);
     const ContinuationResult path = continue_one_dof(sys_, start, direction, stop, copt);
+    b_.linear_solver = path.linear_solver;
+    b_.continuation = path.stats;
+    b_.continuation_points = path.points.size();
     if (path.points.empty()) {
       b_.message = "general solver: continuation failed at the start (" + path.reason + ")";
       return false;

@@ -38,6 +38,7 @@
 #include "kernel/geometry/face_placement.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "kernel/solve/continuation.hpp"
 
 namespace rigidfold {
 
@@ -87,6 +88,12 @@ struct MotionBranch {
   std::vector<MotionStep> steps;
   std::vector<MotionEvent> events;
   double max_residual = 0.0, max_mismatch = 0.0;
+  // The general solver's continuation: its corrector's linear solver
+  // (ContinuationResult::linear_solver), its work and its points; empty and zero when the
+  // branch was not continued by it (multiplier model, closed forms, not traced).
+  std::string linear_solver;
+  ContinuationStats continuation;
+  std::size_t continuation_points = 0;
 };
 
 struct MotionTrace {

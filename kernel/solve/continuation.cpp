@@ -20,20 +20,21 @@ namespace {
 // on a 10^5-10^6-crease Jacobian costs far more than the whole corrector.
 constexpr int kRankRevealingLimit = 2000;
 
-// LinearSolver::kAuto: the PCG corrector from this many unknowns up, the direct one below.
-// For now never: PCG stays opt-in (kPcg). Measured (Miura, CPU time, min of 2-3 runs on a
-// 2-core machine at load 3-4):
-//   BM_Trace (104 points of equal arclength from 5 to 170 deg): 40 x 40 268 against 316 ms,
-//   100 x 100 2.57 against 3.45 s, 200 x 200 18.6 against 25.1 s (1.0 factorisation per step
-//   instead of 2.0-2.7, the same points; error against the closed form 7.7e-13 / 5.4e-12 /
-//   3.9e-12, direct 5.1e-13 / 1.7e-12 / 3.9e-12);
-//   BM_PeerTrace (trace_motion's settings: steps of up to 0.2 rad in any crease, landing,
-//   curved predictor) 100 x 100: 5.4 s against 1.6 s - the iterates move so far that the
-//   factor of one is a poor preconditioner at the next (186 of 325 CG solves hit the cap,
-//   249 factorisations, 21 rejected steps); same error (2.1e-11).
-// An automatic choice needs a cheaper test of when a stale factor will do (e.g. by the step
-// length) before it can be the default.
-constexpr int kPcgUnknowns = std::numeric_limits<int>::max();
+// LinearSolver::kAuto: the PCG corrector above kRankRevealingLimit unknowns (where the tangent
+// no longer comes from a rank-revealing factorisation), the direct one below; and back to the
+// direct one for the rest of the trace once the stale factors stop paying: after
+// kAutoPcgWindow attempts (solves tried plus solves skipped because the last CG rate predicted
+// a miss), when more than a third of them ended in a fresh factorisation anyway.
+// Measured (Miura, one run each, 2-core machine, nothing else running; BM_Trace: 104 points of
+// equal arclength from 5 to 170 deg; BM_PeerTrace: trace_motion's settings, steps of up to
+// 0.2 rad in any crease, landing, curved predictor):
+//   BM_Trace 100 x 100: direct 3.37 s (250 factorisations), PCG 2.42 s (104), errors against
+//   the closed form 1.7e-12 / 5.4e-12; BM_PeerTrace 100 x 100: direct 1.68 s (87 factorisations),
+//   PCG 1.34 s (45), error 2.1e-11 both; 50 x 50 PCG 0.24 s.
+// (PCG looked 3.4x slower on BM_PeerTrace before: a landing step 1.5e-13 long broke the curved
+// predictor, which then failed 21 steps; PCG's different points had only met it.)
+constexpr int kPcgUnknowns = kRankRevealingLimit + 1;
+constexpr int kAutoPcgWindow = 6;
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -308,9 +309,20 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
   const bool reuse = options.reuse == FactorizationReuse::kOn ||
                      (options.reuse == FactorizationReuse::kAuto && !rank_revealing);
   out.reused_factorization = reuse;
-  const bool pcg = !reuse && (options.linear_solver == LinearSolver::kPcg ||
-                              (options.linear_solver == LinearSolver::kAuto && system.num_unknowns() >= kPcgUnknowns));
+  bool pcg = !reuse && (options.linear_solver == LinearSolver::kPcg ||
+                        (options.linear_solver == LinearSolver::kAuto && system.num_unknowns() >= kPcgUnknowns));
+  const bool pcg_may_drop = pcg && options.linear_solver == LinearSolver::kAuto;
   out.linear_solver = reuse ? "chord (stale CHOLMOD factor)" : pcg ? "PCG (stale CHOLMOD factor)" : "direct (CHOLMOD)";
+  // kAuto: PCG until the stale factors stop paying (kAutoPcgWindow above), then direct.
+  auto maybe_drop_pcg = [&] {
+    if (!pcg_may_drop || !pcg) return;
+    const int attempts = st.pcg_solves + st.pcg_predicted_renewals;
+    const int missed = st.pcg_fallbacks + st.pcg_predicted_renewals;
+    if (attempts < kAutoPcgWindow || 3 * missed <= attempts) return;
+    pcg = false;
+    out.linear_solver = "direct (CHOLMOD), after " + std::to_string(missed) + " of " + std::to_string(attempts) +
+                        " stale-factor PCG solves ended in a fresh factorisation";
+  };
   // Small systems: unit null vector from a rank-revealing factorisation, which also checks
   // DOF = 1 (empty if not).
   auto rank_tangent = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
@@ -342,6 +354,11 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     Eigen::VectorXd w = prev - d.dx;
     const double norm = w.norm();
     if (!(norm > 0) || !std::isfinite(norm)) return fresh_tangent(J, prev);
+    // CG's own stopping test is on its normal equations, so J w itself is checked as well: a
+    // wrong tangent would fail every later step.
+    const double miss = (J * w).lpNorm<Eigen::Infinity>();
+    const double scale = (J.cwiseAbs() * w.cwiseAbs()).maxCoeff();
+    if (!(miss <= kTangentTolerance * scale)) return fresh_tangent(J, prev);
     return w / norm;
   };
   Eigen::VectorXd t = rank_revealing ? rank_tangent(start.x) : fresh_tangent(J0, generic_vector(system.num_unknowns()));
@@ -382,6 +399,7 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
       out.reason = "stop";
       return out;
     }
+    maybe_drop_pcg();
     const Eigen::VectorXd& xk = out.points.back().x;
     // Land on the next value if this step reaches it and the unknown is a usable parameter.
     int landing = -1;
@@ -401,7 +419,11 @@ ContinuationResult continue_one_dof(const ClosureSystem& system, const Eigen::Ve
     if (out.points.size() >= 2 && options.curved_predictor && !reuse) {
       const ContinuationPoint& last = out.points.back();
       const double hp = last.step;
-      if (hp > 0) xp += (hs * hs / (hp * hp)) * (out.points[out.points.size() - 2].x - xk + hp * t);
+      // Not when the step is over 100x the last: the term divides by hp^2, so it scales the
+      // rounding of the points' difference by (hs / hp)^2 (1e4 x 1e-16 |x| at 100x). A landing
+      // step can be ~1e-13 long (a landing value a rounding error ahead of the last point);
+      // after one, the term threw the predictor 1e13 away and every step size failed.
+      if (hp > 0 && hs <= 100 * hp) xp += (hs * hs / (hp * hp)) * (out.points[out.points.size() - 2].x - xk + hp * t);
     }
     const Corrected c = landing >= 0
                             ? correct(lin, Constraint{e_land, xk, land[next_land] - xk[land_k]}, t, xp, options, reuse,

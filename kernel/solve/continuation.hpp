@@ -62,8 +62,10 @@ enum class FactorizationReuse { kAuto, kOn, kOff };
 // the rate of the last CG solve predicts it would not; it is the next preconditioner. The
 // tangent at an accepted point: w = t - d with [J; t^T] d = [J t; 0] (J w = 0) by the same
 // solve, to 1e-8 relative (it only feeds the predictor and the step's constraint row).
-// kAuto: kDirect for now (kPcg is faster on Miura traces of small steps, 100 x 100 and 200 x
-// 200, but 3.4x slower at the trace command's 0.2-rad steps: continuation.cpp has the figures).
+// kAuto: kDirect up to 2000 unknowns (kRankRevealingLimit); above, kPcg until more than a
+// third of its first 6+ stale-factor solves end in a fresh factorisation anyway (large steps,
+// e.g. the trace command's 0.2 rad), then kDirect for the rest of the trace
+// (ContinuationResult::linear_solver says which; continuation.cpp has the figures).
 enum class LinearSolver { kAuto, kDirect, kPcg };
 
 struct ContinuationOptions {
@@ -140,7 +142,8 @@ struct ContinuationResult {
   std::string reason;                     // "stop", "max_points", "step too small", "start not on manifold", "not 1 DOF"
   bool reused_factorization = false;      // the chord corrector was used (options.reuse resolved)
   // The corrector's linear solver (options.reuse and linear_solver resolved): "direct
-  // (CHOLMOD)", "PCG (stale CHOLMOD factor)" or "chord (stale CHOLMOD factor)".
+  // (CHOLMOD)", "PCG (stale CHOLMOD factor)", "chord (stale CHOLMOD factor)", or (kAuto)
+  // "direct (CHOLMOD), after M of N stale-factor PCG solves ended in a fresh factorisation".
   std::string linear_solver;
   ContinuationStats stats;
 };

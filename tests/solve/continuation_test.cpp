@@ -251,6 +251,60 @@ TEST(SolverContinuation, PcgFallsBackToAFreshFactorization) {
   EXPECT_LE(tc.worst_error, 1e-10);
 }
 
+// kAuto above 2000 unknowns (40 x 40: 3,200) takes the PCG corrector and keeps it while the
+// stale factors pay; with CG capped at one iteration they do not, and it drops to the direct
+// one for the rest of the trace, saying so. Both traces as accurate as ever.
+TEST(SolverContinuation, AutomaticLinearSolverPicksPcgOnLargeSystemsAndDropsItWhenItDoesNotPay) {
+  const TraceCheck pays = trace_miura(40, 120, 40, FactorizationReuse::kOff, LinearSolver::kAuto);
+  print("miura 40x40 newton, automatic", pays);
+  EXPECT_EQ(pays.result.linear_solver, "PCG (stale CHOLMOD factor)");
+  EXPECT_GT(pays.result.stats.pcg_solves, 0);
+  EXPECT_LE(pays.worst_error, 1e-10);
+  const TraceCheck drops = trace_miura(40, 60, 20, FactorizationReuse::kOff, LinearSolver::kAuto, 1);
+  print("miura 40x40 newton, automatic, CG capped at 1 iteration", drops);
+  EXPECT_EQ(drops.result.linear_solver.rfind("direct (CHOLMOD), after ", 0), 0u) << drops.result.linear_solver;
+  // Dropped after its first window: far fewer PCG attempts than corrector iterations.
+  EXPECT_LT(drops.result.stats.pcg_solves + drops.result.stats.pcg_predicted_renewals,
+            drops.result.stats.corrector_iterations);
+  EXPECT_LE(drops.worst_error, 1e-10);
+}
+
+// A landing value a rounding error (1e-13 rad) past the previous one makes a landing step
+// ~1e-13 long. The curved predictor's term divides by the last step squared; used after such
+// a step it threw the next predictor ~1e13 away, and the trace then failed step after step
+// (14 rejected steps here, 21 on the trace command's 100 x 100 Miura). It now skips the term when
+// the step is over 100x the last.
+TEST(SolverContinuation, ALandingStepOfARoundingErrorDoesNotBreakTheCurvedPredictor) {
+  generators::MiuraParams m;
+  m.rows = m.cols = 6;
+  m.alpha = 1.1;
+  const CreasePattern p = generators::miura_ori(m);
+  const ClosureSystem sys(p, build_topology(p));
+  const int driver = valley_straight_driver(sys, p, m);
+  ASSERT_GE(driver, 0);
+  const double start = to_radians(5.0), target = to_radians(120.0);
+  const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
+  const Eigen::VectorXd dir = sys.unknowns_from_edges(miura_edge_angles(p, m, start + 1e-3)) - x0;
+  ContinuationOptions opt;
+  opt.max_angle_step = 0.2;
+  opt.initial_step = std::numeric_limits<double>::infinity();
+  opt.curved_predictor = true;
+  opt.landing_unknown = driver;
+  opt.landing_values = {to_radians(30.0), to_radians(30.0) + 1e-13, to_radians(90.0)};
+  const ContinuationResult res =
+      continue_one_dof(sys, x0, dir, [&](const Eigen::VectorXd& x) { return x[driver] >= target; }, opt);
+  ASSERT_TRUE(res.stopped) << res.reason;
+  int landings = 0;
+  for (const ContinuationPoint& pt : res.points) {
+    EXPECT_LE(pt.residual, 1e-12);
+    EXPECT_LE((pt.x - sys.unknowns_from_edges(miura_edge_angles(p, m, pt.x[driver]))).lpNorm<Eigen::Infinity>(),
+              1e-10);
+    if (pt.landing >= 0) ++landings;
+  }
+  EXPECT_EQ(landings, 3);
+  EXPECT_EQ(res.stats.rejected_steps, 0);
+}
+
 // The chord corrector reports itself whatever linear_solver says; kAuto stays direct on a
 // small system.
 TEST(SolverContinuation, ReportsTheLinearSolverInUse) {
