@@ -3,15 +3,32 @@
 // projection to 1e-12 from the closed form perturbed by 1e-4, one crease held). Each run
 // reports the error reached: "max_defect" (loop gain) / "mismatch" for the multiplier
 // path; "residual" and "error_vs_closed_form" for the corrector.
+//
+// Issue 11's general cases beside the Miura: `check`'s front door (check_foldability) on every
+// crease-pattern file of the corpus beside the project (../shared/corpus from the working
+// directory, or $RIGIDFOLD_CORPUS; absent in CI clones, where those runs are skipped), and the
+// general verdict forced on a jittered Miura (interior vertices moved by up to 0.01 of the
+// default panel size: not foldable, which `check` proves by the multiplier model's loop gain,
+// 0.34 s at 100 x 100; the general solver's evidence search is what is timed here). Their counters: the verdict
+// class (0 foldable, 1 within tolerance, 2 not foldable proof, 3 not foldable evidence,
+// 4 undecided), the model and, for the general verdict, the least residual per amplitude.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <numbers>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "data/generators/miura.hpp"
+#include "kernel/analysis/foldability_report.hpp"
+#include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
 #include "kernel/closure/closure_system.hpp"
 #include "kernel/geometry/fold_angles.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/solve/newton_projection.hpp"
 
@@ -58,7 +75,72 @@ void BM_GeneralCorrector(benchmark::State& state) {
 }
 BENCHMARK(BM_GeneralCorrector)->Arg(10)->Arg(30)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
 
+std::filesystem::path corpus_dir() {
+  const char* env = std::getenv("RIGIDFOLD_CORPUS");
+  return env ? std::filesystem::path(env) : std::filesystem::path("../shared/corpus");
+}
+
+// The corpus's .fold and .svg files, sorted (empty if there is no corpus).
+std::vector<std::filesystem::path> corpus_files() {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(corpus_dir(), ec)) return files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(corpus_dir(), ec)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file() && (ext == ".fold" || ext == ".svg")) files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// `check FILE` as the CLI runs it (default options: the input's own precision, letters kept).
+void BM_CheckCorpusFile(benchmark::State& state, const std::filesystem::path& file) {
+  const CreasePattern p = read_pattern(file.string());
+  const Topology t = build_topology(p);
+  FoldabilityReport r;
+  for (auto _ : state) r = check_foldability(p, t);
+  state.counters["edges"] = p.num_edges();
+  state.counters["verdict_class"] = static_cast<int>(r.verdict);
+  state.counters["general_model"] = r.model == FoldabilityModel::kGeneralLoopClosure;
+  state.SetLabel(file.filename().string() + ": " + to_string(r.verdict));
+}
+
+// The general verdict forced on an n x n Miura with its interior vertices jittered.
+void BM_GeneralVerdictJitteredMiura(benchmark::State& state) {
+  auto params = miura(static_cast<int>(state.range(0)));
+  params.perturbation = 0.01;
+  params.seed = 3;
+  const CreasePattern p = generators::miura_ori(params);
+  const Topology t = build_topology(p);
+  GeneralVerdict v;
+  for (auto _ : state) v = general_verdict(p, t);
+  state.counters["edges"] = p.num_edges();
+  state.counters["not_foldable"] = v.verdict == Verdict::kNotRigidlyFoldable;
+  state.counters["growth_exponent"] = v.growth_exponent;
+  for (const AmplitudeEvidence& e : v.evidence)
+    state.counters["least_residual_at_" + std::to_string(e.amplitude)] = e.least_residual;
+  state.SetLabel(to_string(v.verdict));
+}
+
+void register_general_cases() {
+  for (const std::filesystem::path& file : corpus_files())
+    benchmark::RegisterBenchmark(
+        ("BM_CheckCorpusFile/" + file.parent_path().filename().string() + "/" + file.stem().string()).c_str(),
+        BM_CheckCorpusFile, file)
+        ->Unit(benchmark::kMillisecond)->Iterations(1);
+  for (int n : {30, 100, 200})
+    benchmark::RegisterBenchmark("BM_GeneralVerdictJitteredMiura", BM_GeneralVerdictJitteredMiura)
+        ->Arg(n)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
+}
+
 }  // namespace
 }  // namespace rigidfold
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  rigidfold::register_general_cases();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

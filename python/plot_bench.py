@@ -32,9 +32,14 @@ def family(run):
     """Benchmark family; traces and continuation steps with factorisation reuse (the opt-in
     chord corrector, counter reuse = 1) form their own family "..._reuse", so each fit has one
     setting and the targets are judged on the default (Newton)."""
-    name = run["name"].split("/")[0]
-    if name in ("BM_Trace", "BM_ContinuationStep") and run.get("reuse", 0) == 1:
-        return name + "_reuse"
+    parts = run["name"].split("/")
+    name = parts[0]
+    if name in ("BM_Trace", "BM_ContinuationStep"):
+        if run.get("reuse", 0) == 1:
+            return name + "_reuse"
+        # range(1): 0 direct Newton (the family itself), 2 PCG, 3 the automatic choice.
+        mode = parts[2] if len(parts) > 2 and parts[2].isdigit() else "0"
+        return name + {"2": "_pcg", "3": "_auto"}.get(mode, "")
     return name
 
 
@@ -217,6 +222,35 @@ def peer_section(fams):
     return out
 
 
+def general_cases_section(fams):
+    """Issue 11's general cases beside the Miura: `check` on each corpus file (target <= 2 s)
+    and the general verdict forced on a jittered Miura (verdict_bench)."""
+    out = ["## General cases: corpus files and a jittered Miura (issue 11)", ""]
+    corpus = sorted(fams.get("BM_CheckCorpusFile", []), key=lambda r: r["name"])
+    if corpus:
+        worst = max(seconds(r)[0] for r in corpus)
+        out += [f"`check` (check_foldability, default options) on each file of ../shared/corpus: slowest "
+                f"{worst:.3g} s, target <= 2 s per file: {verdict(worst <= 2.0)}.", "",
+                "| file | creases | wall s | verdict |", "|---|---|---|---|"]
+        out += [f"| {r['name'].split('/', 1)[1]} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | "
+                f"{r.get('label', '').split(': ', 1)[-1]} |" for r in corpus]
+        out.append("")
+    else:
+        out += ["No corpus beside the project (../shared/corpus): the per-file `check` runs were skipped.", ""]
+    jit = sorted(fams.get("BM_GeneralVerdictJitteredMiura", []), key=lambda r: r.get("edges", 0))
+    if jit:
+        out += ["General verdict forced on an n x n Miura with interior vertices jittered by up to 0.01 (the "
+                "multiplier model proves it not foldable by loop gain; this is the general solver's evidence search):", "",
+                "| n | creases | wall s | verdict | growth exponent | least residual at 0.1 / 0.01 / 0.001 rad |",
+                "|---|---|---|---|---|---|"]
+        for r in jit:
+            res = " / ".join(fmt(r.get(f"least_residual_at_{a:.6f}")) for a in (0.1, 0.01, 0.001))
+            out.append(f"| {cells(r)} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | {r.get('label', '')} | "
+                       f"{fmt(r.get('growth_exponent'))} | {res} |")
+        out.append("")
+    return out
+
+
 def profile_section(fams, largest):
     """Where the time of the missed targets goes: the corrector against its factorisations,
     and the phase timers of the largest trace (continuation stats counters)."""
@@ -260,6 +294,8 @@ def main():
     fig, ax = plt.subplots(figsize=(7, 5))
     exps = {}
     for fam, rs in sorted(fams.items()):
+        if fam == "BM_CheckCorpusFile":  # one run per file, not a size series
+            continue
         main_rs = [r for r in rs if is_default(r) and "edges" in r]
         main_rs.sort(key=lambda r: r["edges"])
         if len(main_rs) < 2:
@@ -361,7 +397,7 @@ def main():
                          f"{fmt(gc[e].get('error_vs_closed_form'))} |")
         lines.append("")
 
-    lines[4:4] = targets_section(fams, exps) + peer_section(fams)
+    lines[4:4] = targets_section(fams, exps) + peer_section(fams) + general_cases_section(fams)
 
     # Memory and accuracy against size.
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
