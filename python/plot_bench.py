@@ -115,7 +115,7 @@ def targets_section(fams, exps):
         rows.append((title, "not measured", note))
 
     limit_row("One corrector, 1000 x 1000 Miura, <= 1 s", "BM_Corrector", lambda r: seconds(r)[0], 1.0, "s")
-    limit_row("100-step trace (5 to 170 deg), 1000 x 1000 Miura, <= 60 s", "BM_Trace", lambda r: seconds(r)[0], 60.0,
+    limit_row("100-step trace (5 to 170 deg), 1000 x 1000 Miura, <= 60 s", "BM_Trace_auto", lambda r: seconds(r)[0], 60.0,
               "s")
     mem_r = [r for fam in ("BM_Corrector", "BM_Trace", "BM_Factorize") for r in fams.get(fam, [])
              if cells(r) == TARGET_N and "peak_rss_mb" in r]
@@ -131,7 +131,7 @@ def targets_section(fams, exps):
             b = max(big, key=lambda r: (r["edges"], r["peak_rss_mb"]))
             note += f"; largest: {b['name'].split('/')[0]} {cells(b)} x {cells(b)}: {b['peak_rss_mb']:.0f} MB"
         rows.append(("Peak memory, 1000 x 1000 Miura, <= 8 GiB", "not measured", note))
-    for fam in ("BM_Corrector", "BM_Trace"):
+    for fam in ("BM_Corrector", "BM_Trace_auto"):
         rs = [r for r in fams.get(fam, []) if is_default(r) and r["edges"] >= 1e4]
         e = exps.get(fam)
         title = f"Time growth of {fam} <= size^1.2 over 1e4..1e6 creases"
@@ -170,7 +170,8 @@ def targets_section(fams, exps):
         if not equal:
             how += "; errors not both <= 1e-10"
         rows.append((title, verdict(ok), how))
-    errs = [(r.get("error_vs_closed_form"), r) for fam in ("BM_Corrector", "BM_ContinuationStep", "BM_Trace")
+    errs = [(r.get("error_vs_closed_form"), r) for fam in ("BM_Corrector", "BM_ContinuationStep", "BM_ContinuationStep_pcg",
+                                                         "BM_Trace", "BM_Trace_pcg", "BM_Trace_auto")
             for r in fams.get(fam, []) if is_default(r) and "error_vs_closed_form" in r]
     if errs:
         worst, wr = max(errs, key=lambda p: p[0])
@@ -232,7 +233,7 @@ def general_cases_section(fams):
         out += [f"`check` (check_foldability, default options) on each file of ../shared/corpus: slowest "
                 f"{worst:.3g} s, target <= 2 s per file: {verdict(worst <= 2.0)}.", "",
                 "| file | creases | wall s | verdict |", "|---|---|---|---|"]
-        out += [f"| {r['name'].split('/', 1)[1]} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | "
+        out += [f"| {r['name'].split('/', 1)[1].replace('/iterations:1', '')} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | "
                 f"{r.get('label', '').split(': ', 1)[-1]} |" for r in corpus]
         out.append("")
     else:
@@ -264,12 +265,14 @@ def profile_section(fams, largest):
                    f"(BM_Factorize), so factorisations are ~{min(its * tf / tc, 1) * 100:.0f}% of it. The factorisation "
                    f"is flop-bound (simplicial CHOLMOD LLT, fill of a 2D mesh under AMD or nested dissection): a single one "
                    f"already exceeds the 1 s budget there.")
-    for fam, label in (("BM_Trace", "Newton (default)"), ("BM_Trace_reuse", "factorisation reuse (chord, opt-in)")):
+    for fam, label in (("BM_Trace_auto", "Newton, automatic linear solver (the default: PCG on a stale factor while it pays)"),
+                       ("BM_Trace", "Newton, direct (a fresh factorisation per iteration)"),
+                       ("BM_Trace_reuse", "factorisation reuse (chord, opt-in)")):
         r = largest(fam)
         if r is None or "s_factorize" not in r:
             continue
         total = seconds(r)[0]
-        parts = {k: r.get(k, 0) for k in ("s_factorize", "s_solve", "s_null_vector", "s_evaluate", "s_rank")}
+        parts = {k: r.get(k, 0) for k in ("s_factorize", "s_solve", "s_null_vector", "s_evaluate", "s_rank", "s_pcg")}
         shares = ", ".join(f"{k[2:]} {v / total * 100:.0f}%" for k, v in parts.items() if v > 0)
         out.append(f"- Trace at {cells(r)} x {cells(r)}, {label}: {total:.3g} s for {r.get('points', 0):.0f} points, "
                    f"{r.get('fact_per_step', 0):.2f} factorisations and {r.get('solves', 0) / max(r.get('points', 1), 1):.1f} "
