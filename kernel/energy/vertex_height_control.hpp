@@ -43,7 +43,9 @@ struct VertexHeightLoad {
 };
 
 struct HeightControlOptions {
-  double tolerance = 1e-12;   // on |grad L|_inf / max(k) and the constraint rows (rad, length)
+  double tolerance = 1e-12;   // on |grad L|_inf / max(k) (or its rounding bound, if larger:
+                              // HeightControlledEquilibrium::stationarity_bound) and the
+                              // constraint rows (rad, length)
   int max_iterations = 50;
   double rank_tolerance = 1e-9;
   double stability_tolerance = 1e-9;  // eigenvalue > this * max(k): positive
@@ -64,6 +66,10 @@ struct HeightControlledEquilibrium {
   double energy = 0.0;
   double constraint_residual = 0.0;  // largest |row| (closure rad, supports length)
   double stationarity_residual = 0.0;  // |grad_z L|_inf
+  // What the stationarity test asked of it: max(tolerance x max(k), the bound on the rounding
+  // of grad_z L's own evaluation, gamma_(M+9) x max_i (|grad E|_i + (|A|^T |w|)_i)), which
+  // exceeds the first only where the reactions are large (near the flat state).
+  double stationarity_bound = 0.0;
   int tangent_dimension = 0;
   Eigen::VectorXd reduced_hessian_eigenvalues;  // ascending
   double min_eigenvalue = 0.0;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "data/generators/waterbomb.hpp"
@@ -59,8 +60,54 @@ TEST(EnergyHeightControl, ReactionForceEqualsVirtualWork) {
         EXPECT_TRUE(eq.stable);  // the rest state under its own height
       }
       EXPECT_EQ(eq.tangent_dimension, (2 * n - 3) + 3 - n - 1);
+      // Reactions of order 1: the stationarity test is the plain 1e-12 x max(k).
+      EXPECT_EQ(eq.stationarity_bound, 1e-12 * km) << n << " " << deg;
     }
   }
+}
+
+// Near the flat state the reactions are large (n = 60, theta = 0.177 deg: F = -1.6e5), and
+// the rounding of grad L's own evaluation exceeds 1e-12 x k: at the exact closed-form state
+// it evaluates to 3e-11 (the bound on that rounding is 2.6e-9), Newton's steps lowered it to
+// 9e-12 but no further, and after 50 iterations the sample was refused (`waterbomb --n 60 --samples 3
+// --curve` exited 3 after 8 s). With the rounding bound in the test it converges, and its
+// force and fold angles agree with the closed form.
+TEST(EnergyHeightControl, LargeReactionsNearFlatConvergeToTheRoundingBound) {
+  const int n = 60;
+  generators::WaterbombParams wp;
+  wp.n = n;
+  const CreasePattern p = generators::waterbomb_base(wp);
+  const Topology topo = build_topology(p);
+  const ClosureSystem sys(p, topo);
+  const double th0 = to_radians(60.0);
+  const auto ws = waterbomb::springs_at_rest_theta(n, th0, 1.0, 1.0);
+  auto per_edge = [&](waterbomb::FoldPair g) { return waterbomb::waterbomb_edge_angles(p, g); };
+  const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {1.0, 1.0, 0.0}), per_edge(ws.rest));
+  VertexHeightLoad load;
+  load.vertex = 0;
+  for (int e = 0; e < 2 * n; ++e)
+    if (p.assignments[e] == Assignment::Valley) load.support_edges.push_back(e);
+  const double r = std::cos(kPi / n);
+  const double th = to_radians(0.177);
+  load.height = r * std::cos(th);
+  const Eigen::VectorXd want = per_edge(waterbomb::waterbomb_fold_angles(n, th));
+  HeightControlOptions ho;
+  ho.compute_stability = false;
+  // From the closed form, as the curve starts its near-side samples: the exact state, whose
+  // gradient evaluates to ~3e-11 by rounding alone.
+  const Eigen::VectorXd x0 = sys.unknowns_from_edges(want);
+  const HeightControlledEquilibrium eq = vertex_height_equilibrium(p, sys, topo, springs, load, x0, ho);
+  ASSERT_TRUE(eq.converged) << eq.message << ": stationarity " << eq.stationarity_residual << " against "
+                            << eq.stationarity_bound << ", constraints " << eq.constraint_residual << ", "
+                            << eq.iterations << " iterations";
+  const double F = waterbomb::waterbomb_force(ws, th0, r, th).force;
+  EXPECT_LT(F, -1e5);
+  EXPECT_GT(eq.stationarity_bound, 1e-12);             // the rounding bound is the one in force
+  EXPECT_LE(eq.stationarity_bound, 1e-13 * std::fabs(F));  // ... tiny against the force (2.6e-9 here)
+  std::printf("n = 60, theta = 0.177 deg: stationarity %.2e (bound %.2e), %d iterations, force %.10g\n",
+              eq.stationarity_residual, eq.stationarity_bound, eq.iterations, eq.force);
+  EXPECT_NEAR(eq.force, F, 1e-9 * std::fabs(F));
+  EXPECT_LT((eq.edge_angles - want).lpNorm<Eigen::Infinity>(), 1e-9);
 }
 
 // Exact derivatives: on the closure manifold, the constraint Jacobian and the Hessian of the
