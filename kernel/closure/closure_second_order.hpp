@@ -24,9 +24,10 @@ Eigen::VectorXd closure_second_derivative(const ClosureSystem& system, const Top
 
 // The weighted Hessian H(w) = sum_k w_k Hess r_k(x) (n x n, symmetric, radians per unit^2):
 // the derivative of J(x)^T w in x, which the branch-point system (branch_point_system.hpp)
-// needs. Rows as above: vertex rows from vertex_closure_second_derivative by polarisation,
-// D^2 r[e_i, e_j] = (D^2 r[e_i + e_j] - D^2 r[e_i] - D^2 r[e_j]) / 2, over the pairs of
-// unknowns of each vertex's fan (exact on the manifold, O(|r(x)|) off it); equality rows 0;
+// needs. Rows as above: vertex rows D^2 r[e_i, e_j] = vee(skew(d2R/drho_i drho_j)) with
+// d2R/drho_i drho_j = [a_i]x [a_j]x R (i <= j in fan order, a_i crease i's axis), the same
+// value as vertex_closure_second_derivative by polarisation in O(d^2) per vertex of degree d
+// (exact on the manifold, O(|r(x)|) off it); equality rows 0;
 // hole rows by central differences of the exact Jacobian (h = 1e-5, column by column).
 // Inputs: x (num_unknowns()), w (num_rows()). Throws std::invalid_argument on a size mismatch.
 Eigen::MatrixXd closure_weighted_hessian(const ClosureSystem& system, const Topology& topology,
