@@ -79,25 +79,42 @@ TEST(SolverContinuation, MiuraTracedTo170DegreesMatchesClosedForm) {
 // value of the driver (10, 20, .., 160 deg), each landed point within the tolerance and
 // 1e-10 of the closed form; the points in between are few (the cap, not the arclength,
 // sets the step: at most 3 points per 10 deg of the driver here).
-TEST(SolverContinuation, LandsOnEveryRequestedDrivingValue) {
+// An n x n Miura (alpha = 1.1) traced from 5 deg with trace_motion's settings (steps of at
+// most 0.2 rad in any crease, the curved predictor), landing on the driver's given values.
+struct LandingTrace {
   generators::MiuraParams m;
-  m.rows = m.cols = 12;
-  m.alpha = 1.1;
-  const CreasePattern p = generators::miura_ori(m);
-  const ClosureSystem sys(p, build_topology(p));
-  const int driver = valley_straight_driver(sys, p, m);
-  ASSERT_GE(driver, 0);
-  const double start = to_radians(5.0), target = to_radians(160.0);
-  const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
-  const Eigen::VectorXd dir = sys.unknowns_from_edges(miura_edge_angles(p, m, start + 1e-3)) - x0;
+  CreasePattern p;
+  ClosureSystem sys;
+  int driver;
   ContinuationOptions opt;
-  opt.max_angle_step = 0.2;
-  opt.initial_step = std::numeric_limits<double>::infinity();
-  opt.curved_predictor = true;
-  opt.landing_unknown = driver;
-  for (int d = 10; d <= 160; d += 10) opt.landing_values.push_back(to_radians(d));
-  const ContinuationResult res =
-      continue_one_dof(sys, x0, dir, [&](const Eigen::VectorXd& x) { return x[driver] >= target; }, opt);
+  ContinuationResult res;
+
+  LandingTrace(int n, double target, std::vector<double> landing_values)
+      : m(params(n)), p(generators::miura_ori(m)), sys(p, build_topology(p)), driver(valley_straight_driver(sys, p, m)) {
+    EXPECT_GE(driver, 0);
+    const double start = to_radians(5.0);
+    const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
+    const Eigen::VectorXd dir = sys.unknowns_from_edges(miura_edge_angles(p, m, start + 1e-3)) - x0;
+    opt.max_angle_step = 0.2;
+    opt.initial_step = std::numeric_limits<double>::infinity();
+    opt.curved_predictor = true;
+    opt.landing_unknown = driver;
+    opt.landing_values = std::move(landing_values);
+    res = continue_one_dof(sys, x0, dir, [&](const Eigen::VectorXd& x) { return x[driver] >= target; }, opt);
+  }
+  static generators::MiuraParams params(int n) {
+    generators::MiuraParams m;
+    m.rows = m.cols = n;
+    m.alpha = 1.1;
+    return m;
+  }
+};
+
+TEST(SolverContinuation, LandsOnEveryRequestedDrivingValue) {
+  std::vector<double> values;
+  for (int d = 10; d <= 160; d += 10) values.push_back(to_radians(d));
+  const LandingTrace lt(12, to_radians(160.0), values);
+  const auto& [m, p, sys, driver, opt, res] = lt;
   ASSERT_TRUE(res.stopped) << res.reason;
   std::vector<int> landed(opt.landing_values.size(), 0);
   double worst_error = 0;
@@ -275,24 +292,8 @@ TEST(SolverContinuation, AutomaticLinearSolverPicksPcgOnLargeSystemsAndDropsItWh
 // (14 rejected steps here, 21 on the trace command's 100 x 100 Miura). It now skips the term when
 // the step is over 100x the last.
 TEST(SolverContinuation, ALandingStepOfARoundingErrorDoesNotBreakTheCurvedPredictor) {
-  generators::MiuraParams m;
-  m.rows = m.cols = 6;
-  m.alpha = 1.1;
-  const CreasePattern p = generators::miura_ori(m);
-  const ClosureSystem sys(p, build_topology(p));
-  const int driver = valley_straight_driver(sys, p, m);
-  ASSERT_GE(driver, 0);
-  const double start = to_radians(5.0), target = to_radians(120.0);
-  const Eigen::VectorXd x0 = sys.unknowns_from_edges(miura_edge_angles(p, m, start));
-  const Eigen::VectorXd dir = sys.unknowns_from_edges(miura_edge_angles(p, m, start + 1e-3)) - x0;
-  ContinuationOptions opt;
-  opt.max_angle_step = 0.2;
-  opt.initial_step = std::numeric_limits<double>::infinity();
-  opt.curved_predictor = true;
-  opt.landing_unknown = driver;
-  opt.landing_values = {to_radians(30.0), to_radians(30.0) + 1e-13, to_radians(90.0)};
-  const ContinuationResult res =
-      continue_one_dof(sys, x0, dir, [&](const Eigen::VectorXd& x) { return x[driver] >= target; }, opt);
+  const LandingTrace lt(6, to_radians(120.0), {to_radians(30.0), to_radians(30.0) + 1e-13, to_radians(90.0)});
+  const auto& [m, p, sys, driver, opt, res] = lt;
   ASSERT_TRUE(res.stopped) << res.reason;
   int landings = 0;
   for (const ContinuationPoint& pt : res.points) {
