@@ -9,9 +9,10 @@
 // directory, or $RIGIDFOLD_CORPUS; absent in CI clones, where those runs are skipped), and the
 // general verdict forced on a jittered Miura (interior vertices moved by up to 0.01 of the
 // default panel size: not foldable, which `check` proves by the multiplier model's loop gain,
-// 0.34 s at 100 x 100; the general solver's evidence search is what is timed here). Their counters: the verdict
-// class (0 foldable, 1 within tolerance, 2 not foldable proof, 3 not foldable evidence,
-// 4 undecided), the model and, for the general verdict, the least residual per amplitude.
+// 0.34 s at 100 x 100; the general solver's evidence search is what is timed here). Their
+// counters: the verdict class (0 foldable, 1 within tolerance, 2 not foldable proof, 3 not
+// foldable evidence, 4 undecided), the model and, for the general verdict, the least
+// residual per amplitude.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
