@@ -5,8 +5,8 @@
 // path; "residual" and "error_vs_closed_form" for the corrector.
 //
 // Issue 11's general cases beside the Miura: `check`'s front door (check_foldability) on every
-// crease-pattern file of the corpus beside the project (../shared/corpus from the working
-// directory, or $RIGIDFOLD_CORPUS; absent in CI clones, where those runs are skipped), and the
+// crease-pattern file of the corpus beside the project (../shared/corpus from the source
+// tree, as for the tests; absent in CI clones, where those runs are skipped), and the
 // general verdict forced on a jittered Miura (interior vertices moved by up to 0.01 of the
 // default panel size: not foldable, which `check` proves by the multiplier model's loop gain,
 // 0.34 s at 100 x 100; the general solver's evidence search is what is timed here). Their
@@ -16,7 +16,6 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <numbers>
 #include <random>
@@ -76,17 +75,12 @@ void BM_GeneralCorrector(benchmark::State& state) {
 }
 BENCHMARK(BM_GeneralCorrector)->Arg(10)->Arg(30)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
 
-std::filesystem::path corpus_dir() {
-  const char* env = std::getenv("RIGIDFOLD_CORPUS");
-  return env ? std::filesystem::path(env) : std::filesystem::path("../shared/corpus");
-}
-
 // The corpus's .fold and .svg files, sorted (empty if there is no corpus).
 std::vector<std::filesystem::path> corpus_files() {
   std::vector<std::filesystem::path> files;
   std::error_code ec;
-  if (!std::filesystem::is_directory(corpus_dir(), ec)) return files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(corpus_dir(), ec)) {
+  if (!std::filesystem::is_directory(RIGIDFOLD_CORPUS_DIR, ec)) return files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(RIGIDFOLD_CORPUS_DIR, ec)) {
     const std::string ext = entry.path().extension().string();
     if (entry.is_regular_file() && (ext == ".fold" || ext == ".svg")) files.push_back(entry.path());
   }
