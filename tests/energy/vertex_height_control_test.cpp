@@ -20,22 +20,40 @@
 namespace rigidfold {
 namespace {
 
-TEST(EnergyHeightControl, ReactionForceEqualsVirtualWork) {
-  for (int n : {3, 4, 6}) {
-    generators::WaterbombParams wp;
-    wp.n = n;
-    const CreasePattern p = generators::waterbomb_base(wp);
-    const Topology topo = build_topology(p);
-    const ClosureSystem sys(p, topo);
-    const double th0 = to_radians(60.0), km = 1.5, kv = 1.0;
-    const auto ws = waterbomb::springs_at_rest_theta(n, th0, km, kv);
-    auto per_edge = [&](waterbomb::FoldPair g) { return waterbomb::waterbomb_edge_angles(p, g); };
-    const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {km, kv, 0.0}), per_edge(ws.rest));
-    VertexHeightLoad load;
+// The generated waterbomb base of n mountain creases, its springs at rest at theta0 (k_m,
+// k_v), pressed at its vertex with the valley creases' ends on the support plane.
+struct LoadedWaterbomb {
+  int n;
+  CreasePattern p;
+  Topology topo;
+  ClosureSystem sys;
+  waterbomb::WaterbombSprings ws;
+  CreaseSprings springs;
+  VertexHeightLoad load;
+  double r;  // the generator's mid-line (valley) crease length
+
+  LoadedWaterbomb(int n_, double theta0, double km, double kv)
+      : n(n_), p(base(n_)), topo(build_topology(p)), sys(p, topo), ws(waterbomb::springs_at_rest_theta(n, theta0, km, kv)),
+        springs(make_crease_springs(p, stiffness_by_assignment(p, {km, kv, 0.0}), per_edge(ws.rest))),
+        r(std::cos(kPi / n)) {
     load.vertex = 0;
     for (int e = 0; e < 2 * n; ++e)
       if (p.assignments[e] == Assignment::Valley) load.support_edges.push_back(e);
-    const double r = std::cos(kPi / n);  // the generator's mid-line (valley) crease length
+  }
+  Eigen::VectorXd per_edge(waterbomb::FoldPair g) const { return waterbomb::waterbomb_edge_angles(p, g); }
+  static CreasePattern base(int n) {
+    generators::WaterbombParams wp;
+    wp.n = n;
+    return generators::waterbomb_base(wp);
+  }
+};
+
+TEST(EnergyHeightControl, ReactionForceEqualsVirtualWork) {
+  for (int n : {3, 4, 6}) {
+    const double th0 = to_radians(60.0), km = 1.5, kv = 1.0;
+    LoadedWaterbomb wb(n, th0, km, kv);
+    auto& [nn, p, topo, sys, ws, springs, load, r] = wb;  // load.height is set per state
+    auto per_edge = [&](waterbomb::FoldPair g) { return wb.per_edge(g); };
     std::mt19937_64 rng(n);
     std::uniform_real_distribution<double> u(-0.02, 0.02);
     for (double deg : {60.0, 70.0, 85.0, 95.0, 110.0}) {
@@ -69,28 +87,17 @@ TEST(EnergyHeightControl, ReactionForceEqualsVirtualWork) {
 // Near the flat state the reactions are large (n = 60, theta = 0.177 deg: F = -1.6e5), and
 // the rounding of grad L's own evaluation exceeds 1e-12 x k: at the exact closed-form state
 // it evaluates to 3e-11 (the bound on that rounding is 2.6e-9), Newton's steps lowered it to
-// 9e-12 but no further, and after 50 iterations the sample was refused (`waterbomb --n 60 --samples 3
-// --curve` exited 3 after 8 s). With the rounding bound in the test it converges, and its
-// force and fold angles agree with the closed form.
+// 9e-12 but no further, and after 50 iterations the sample was refused (`waterbomb --n 60
+// --samples 3 --curve` exited 3 after 8 s). With the rounding bound in the test it converges,
+// and its force and fold angles agree with the closed form.
 TEST(EnergyHeightControl, LargeReactionsNearFlatConvergeToTheRoundingBound) {
   const int n = 60;
-  generators::WaterbombParams wp;
-  wp.n = n;
-  const CreasePattern p = generators::waterbomb_base(wp);
-  const Topology topo = build_topology(p);
-  const ClosureSystem sys(p, topo);
   const double th0 = to_radians(60.0);
-  const auto ws = waterbomb::springs_at_rest_theta(n, th0, 1.0, 1.0);
-  auto per_edge = [&](waterbomb::FoldPair g) { return waterbomb::waterbomb_edge_angles(p, g); };
-  const CreaseSprings springs = make_crease_springs(p, stiffness_by_assignment(p, {1.0, 1.0, 0.0}), per_edge(ws.rest));
-  VertexHeightLoad load;
-  load.vertex = 0;
-  for (int e = 0; e < 2 * n; ++e)
-    if (p.assignments[e] == Assignment::Valley) load.support_edges.push_back(e);
-  const double r = std::cos(kPi / n);
+  LoadedWaterbomb wb(n, th0, 1.0, 1.0);
+  auto& [nn, p, topo, sys, ws, springs, load, r] = wb;
   const double th = to_radians(0.177);
   load.height = r * std::cos(th);
-  const Eigen::VectorXd want = per_edge(waterbomb::waterbomb_fold_angles(n, th));
+  const Eigen::VectorXd want = wb.per_edge(waterbomb::waterbomb_fold_angles(n, th));
   HeightControlOptions ho;
   ho.compute_stability = false;
   // From the closed form, as the curve starts its near-side samples: the exact state, whose
