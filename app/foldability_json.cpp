@@ -1,5 +1,8 @@
 #include "app/foldability_json.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::cli {
@@ -63,6 +66,17 @@ Json branch_json(const TracedBranch& b, const FoldabilityReport& r) {
   jb["points"] = b.path.size();
   if (b.valid_points >= 0) jb["valid_points"] = b.valid_points;
   jb["mv_switches"] = switches_json(b.sign_switches);
+  if (r.model == FoldabilityModel::kGeneralLoopClosure && b.valid_points > 0) {
+    // A few states of the valid part, first and last included, for replay by other tools
+    // (a multi-DOF path is not exposed by `trace`).
+    Json states = Json::array();
+    const int count = std::min(b.valid_points, 6);
+    for (int k = 0; k < count; ++k) {
+      const int i = count == 1 ? b.valid_points - 1 : static_cast<int>(std::lround(double(k) * (b.valid_points - 1) / (count - 1)));
+      states.push_back({{"point", i}, {"fold_angles_deg", degrees(b.path[static_cast<std::size_t>(i)])}});
+    }
+    jb["sample_states"] = std::move(states);
+  }
   if (r.model != FoldabilityModel::kMultiplierPropagation) {
     Json gi = nullptr;
     if (b.global_interference_faces.first >= 0) {

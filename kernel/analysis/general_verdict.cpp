@@ -3,11 +3,14 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
+#include "kernel/analysis/flat_crease_push.hpp"
 #include "kernel/analysis/path_watch.hpp"
 #include "kernel/analysis/rounding_residual_bound.hpp"
 #include "kernel/closure/closure_system.hpp"
@@ -15,6 +18,7 @@
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/solve/amplitude_search.hpp"
 #include "kernel/solve/newton_projection.hpp"
+#include "kernel/solve/norm_continuation.hpp"
 #include "kernel/solve/bordered_determinant.hpp"
 #include "kernel/solve/portable_random.hpp"
 #include "kernel/solve/rank.hpp"
@@ -132,6 +136,74 @@ struct Tracer {
     return halt;
   }
 };
+
+enum class TraceMethod { kOneDof, kFoldSize, kDrivingCrease };
+
+// DOF > 1, by the fold's size (norm_continuation.hpp): first toward flat to 1/100 of the
+// candidate's ||x||_2, every point keeping its letters (the first that does not ends that
+// leg), then the path from there out through the candidate until the tracer stops it.
+// Returns the size reached toward flat (radians).
+double trace_by_fold_size(const ClosureSystem& sys, const Eigen::VectorXd& x0, const std::vector<int>& sign,
+                          const GeneralVerdictOptions& opt, Tracer& tr,
+                          const std::function<bool(const Eigen::VectorXd&)>& accept) {
+  const int n = sys.num_unknowns();
+  const Eigen::VectorXd lower = Eigen::VectorXd::Constant(n, -std::numbers::pi);
+  const Eigen::VectorXd upper = Eigen::VectorXd::Constant(n, std::numbers::pi);
+  NormContinuationOptions no;
+  no.tolerance = opt.tolerances.residual;
+  no.max_angle_step = opt.driven_step;
+  no.max_points = opt.max_path_points / 2;
+  no.target_size = x0.norm() / 100;
+  if (opt.use_assignment)
+    for (int i = 0; i < n; ++i) no.sign_floor.push_back(sign[sys.edge_of_unknown(i)]);
+  std::vector<Eigen::VectorXd> inward;
+  double reached = x0.norm();
+  // The margin keeps the letters; a point that breaks one anyway (a crease moved past its
+  // margin within the corrector's tolerance) ends the leg toward flat there.
+  continue_by_norm(sys, x0, lower, upper, no, [&](const Eigen::VectorXd& x) {
+    if (first_crease_against_letter(sign, sys.edges_from_unknowns(x), opt.tolerances.sign_threshold) >= 0) return true;
+    inward.push_back(x);
+    reached = x.norm();
+    return false;
+  });
+  for (auto it = inward.rbegin(); it != inward.rend(); ++it)
+    if (tr.accept(*it)) return reached;
+  if (tr.accept(x0)) return reached;
+  no.target_size = std::sqrt(static_cast<double>(n)) * std::numbers::pi;  // beyond any fold: the tracer stops first
+  no.max_points = std::max(1, opt.max_path_points - static_cast<int>(tr.trace.path.size()));
+  const NormContinuationResult outward = continue_by_norm(sys, x0, lower, upper, no, accept);
+  if (tr.trace.stopped_by == StopReason::kNone) {
+    tr.stop(StopReason::kContinuationFailed);
+    tr.trace.stop_message = "fold-size continuation: " + outward.reason;
+  }
+  return reached;
+}
+
+// DOF > 1, by a driving crease: it is stepped by driven_step and the rest Newton-projected.
+void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0, int k,
+                             const GeneralVerdictOptions& opt, Tracer& tr,
+                             const std::function<bool(const Eigen::VectorXd&)>& accept) {
+  const double dir = x0[k] >= 0 ? 1.0 : -1.0;
+  Eigen::VectorXd x = x0;
+  NewtonOptions nopt;
+  nopt.tolerance = opt.tolerances.residual;
+  nopt.held_unknowns = {k};
+  bool stop = tr.accept(x);
+  while (!stop) {
+    // Predictor: scale the whole point with the driving crease (keeps its shape and
+    // signs); the corrector then moves it the least distance back onto the manifold.
+    const double limit = opt.tolerances.fold_limit();
+    const double target = std::abs(x[k]) + opt.driven_step >= limit ? dir * limit : x[k] + dir * opt.driven_step;
+    const Eigen::VectorXd xp = x * (target / x[k]);
+    const NewtonResult nr = newton_project(sys, xp, nopt);
+    if (!nr.converged) {
+      tr.stop(StopReason::kCorrectorFailed);
+      break;
+    }
+    x = nr.x;
+    stop = accept(x);
+  }
+}
 
 }  // namespace
 
@@ -383,6 +455,21 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     return finish();
   }
 
+  // 3. A candidate that leaves lettered creases flat is pushed off them first (header, step
+  // 3): the strict point, when one is found, is traced before the weak one it came from.
+  if (opt.use_assignment) {
+    std::vector<Candidate> pushed;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      if (static_cast<int>(c) < opt.max_candidates_traced) {
+        if (std::optional<Eigen::VectorXd> strict = push_off_flat_creases(sys, candidates[c].x, sign, opt.tolerances.residual,
+                                                                                    StrictnessReport{}.flat_fraction))
+          pushed.push_back({*strict, candidates[c].edge});
+      }
+      pushed.push_back(candidates[c]);
+    }
+    candidates = std::move(pushed);
+  }
+
   // 2-4. Trace candidates until one certifies.
   GeneralVerdict best;
   bool have_best = false;
@@ -393,87 +480,81 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
            progress_degrees(opt.tolerances.fold_limit()) + " deg";
   };
   for (int c = 0; c < ntrace; ++c) {
-    GeneralVerdict trial = out;
     const Candidate& cand = candidates[c];
-    trial.trace.driving_edge = cand.edge;
     Eigen::VectorXd r;
     Eigen::SparseMatrix<double> J;
     sys.evaluate(cand.x, r, J);
     RankOptions ro;
     ro.relative_tolerance = opt.tolerances.rank_cut;
     const RankResult rk = jacobian_rank(J, ro);
-    trial.trace.dof_at_departure = rk.dof;
-    trial.trace.dof_method = rk.method;
-    PathWatchOptions wo;
-    wo.tolerances = opt.tolerances;
-    trial.trace.valid_points = 0;  // points of the path with every letter respected
-    Tracer tr{sys, opt, trial.trace, PathWatch(pattern, cand.edge, wo), trial.singular_points};
-    if (rk.dof == 1) {
-      if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
-      const ContinuationResult cr =
-          continue_one_dof(sys, cand.x, cand.x,
-                           [&](const Eigen::VectorXd& x) {
-                             report_progress(opt.progress, [&] { return certificate_progress(c, ntrace, cand.edge, x); });
-                             return tr.accept(x);
-                           },
-                           opt.continuation);
-      if (trial.trace.stopped_by == StopReason::kNone) {
-        trial.trace.stopped_by = StopReason::kContinuationFailed;
-        trial.trace.stop_message = cr.reason;
-      }
-    } else {
-      const int k = sys.unknown_of_edge(cand.edge);
-      const double dir = cand.x[k] >= 0 ? 1.0 : -1.0;
-      Eigen::VectorXd x = cand.x;
-      NewtonOptions nopt;
-      nopt.tolerance = opt.tolerances.residual;
-      nopt.held_unknowns = {k};
-      bool stop = tr.accept(x);
-      while (!stop) {
-        // Predictor: scale the whole point with the driving crease (keeps its shape and
-        // signs); the corrector then moves it the least distance back onto the manifold.
-        const double limit = opt.tolerances.fold_limit();
-        const double target = std::abs(x[k]) + opt.driven_step >= limit
-                                  ? dir * limit
-                                  : x[k] + dir * opt.driven_step;
-        Eigen::VectorXd x0 = x * (target / x[k]);
-        const NewtonResult nr = newton_project(sys, x0, nopt);
-        if (!nr.converged) {
-          tr.stop(StopReason::kCorrectorFailed);
-          break;
-        }
-        x = nr.x;
+    // DOF 1: the curve. DOF > 1: the fold's size first, then the older driving crease.
+    const std::vector<TraceMethod> methods =
+        rk.dof == 1 ? std::vector<TraceMethod>{TraceMethod::kOneDof}
+                    : std::vector<TraceMethod>{TraceMethod::kFoldSize, TraceMethod::kDrivingCrease};
+    for (TraceMethod method : methods) {
+      GeneralVerdict trial = out;
+      trial.trace.driving_edge = cand.edge;
+      trial.trace.dof_at_departure = rk.dof;
+      trial.trace.dof_method = rk.method;
+      PathWatchOptions wo;
+      wo.tolerances = opt.tolerances;
+      trial.trace.valid_points = 0;  // points of the path with every letter respected
+      Tracer tr{sys, opt, trial.trace, PathWatch(pattern, cand.edge, wo), trial.singular_points};
+      auto accept = [&](const Eigen::VectorXd& x) {
         report_progress(opt.progress, [&] { return certificate_progress(c, ntrace, cand.edge, x); });
-        stop = tr.accept(x);
+        return tr.accept(x);
+      };
+      double toward_flat = -1.0;  // kFoldSize: the size the path was continued back to
+      if (method == TraceMethod::kOneDof) {
+        if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
+        const ContinuationResult cr = continue_one_dof(sys, cand.x, cand.x, accept, opt.continuation);
+        if (trial.trace.stopped_by == StopReason::kNone) {
+          trial.trace.stopped_by = StopReason::kContinuationFailed;
+          trial.trace.stop_message = cr.reason;
+        }
+      } else if (method == TraceMethod::kFoldSize) {
+        toward_flat = trace_by_fold_size(sys, cand.x, sign, opt, tr, accept);
+        trial.trace_method = "fold size (||rho||_2 stepped, toward flat and out)";
+        trial.traced_toward_flat_to = toward_flat;
+      } else {
+        trace_by_driving_crease(sys, cand.x, sys.unknown_of_edge(cand.edge), opt, tr, accept);
+        trial.trace_method = "driving crease held, the rest projected";
       }
-    }
-    if (trial.trace.valid_points > 0) {
-      trial.certificate_angles = trial.trace.path[trial.trace.valid_points - 1];
-      trial.certificate_mismatch =
-          place_faces(pattern, topology, trial.certificate_angles, reference_fold_angles(pattern, topology))
-              .relative_mismatch();
-    }
-    if (!trial.trace.path.empty()) {
-      trial.trace.driving_begin = trial.trace.path.front()[cand.edge];
-      trial.trace.driving_end = trial.trace.path.back()[cand.edge];
-    }
-    const bool ok = trial.trace.max_fold >= opt.certificate_fold && trial.certificate_mismatch >= 0 &&
-                    trial.certificate_mismatch <= opt.tolerances.placement_mismatch;
-    if (ok) {
-      trial.verdict = Verdict::kRigidlyFoldable;
-      trial.strictness = strictness_at(pattern, trial.certificate_angles);
-      trial.is_proof = true;  // the traced path is the certificate
-      std::ostringstream why;
-      why << "traced a folding path to max |rho| = " << trial.trace.max_fold << " rad (DOF "
-          << trial.trace.dof_at_departure << ", max residual " << trial.trace.max_residual << ", placement mismatch "
-          << trial.certificate_mismatch << "); stopped by " << trial.trace.stop_text();
-      trial.reason = why.str();
-      out = std::move(trial);
-      return finish();
-    }
-    if (!have_best || trial.trace.max_fold > best.trace.max_fold) {
-      best = std::move(trial);
-      have_best = true;
+      if (trial.trace.valid_points > 0) {
+        trial.certificate_angles = trial.trace.path[trial.trace.valid_points - 1];
+        trial.certificate_mismatch =
+            place_faces(pattern, topology, trial.certificate_angles, reference_fold_angles(pattern, topology))
+                .relative_mismatch();
+      }
+      if (!trial.trace.path.empty()) {
+        trial.trace.driving_begin = trial.trace.path.front()[cand.edge];
+        trial.trace.driving_end = trial.trace.path.back()[cand.edge];
+      }
+      // The fold-size path must also reach back toward flat to 1/100 of the candidate's size.
+      const bool reached_flat_side =
+          method != TraceMethod::kFoldSize || (toward_flat > 0 && toward_flat <= cand.x.norm() / 100 * (1 + 1e-6));
+      const bool ok = reached_flat_side && trial.trace.max_fold >= opt.certificate_fold &&
+                      trial.certificate_mismatch >= 0 && trial.certificate_mismatch <= opt.tolerances.placement_mismatch;
+      if (ok) {
+        trial.verdict = Verdict::kRigidlyFoldable;
+        trial.strictness = strictness_at(pattern, trial.certificate_angles);
+        trial.is_proof = true;  // the traced path is the certificate
+        std::ostringstream why;
+        why << "traced a folding path to max |rho| = " << trial.trace.max_fold << " rad (DOF "
+            << trial.trace.dof_at_departure;
+        if (method == TraceMethod::kFoldSize)
+          why << ", stepping the fold's size ||rho||_2, from " << toward_flat << " rad near flat to "
+              << trial.trace.path.back().norm();
+        why << ", max residual " << trial.trace.max_residual << ", placement mismatch " << trial.certificate_mismatch
+            << "); stopped by " << trial.trace.stop_text();
+        trial.reason = why.str();
+        out = std::move(trial);
+        return finish();
+      }
+      if (!have_best || trial.trace.max_fold > best.trace.max_fold) {
+        best = std::move(trial);
+        have_best = true;
+      }
     }
   }
   out = std::move(best);

@@ -16,8 +16,16 @@
 //     violate its letter; a crease of the wrong sign beyond it does.
 //  2. DOF at the candidate: jacobian_rank of the full Jacobian (no crease held), cut at
 //     tolerances.rank_cut.
-//  3. Trace. DOF 1: continue_one_dof (pseudo-arclength) in the direction that increases the
-//     fold (tangent . x > 0). DOF > 1: projected driving: the driving crease is stepped by
+//  3. Trace. A candidate that leaves some M/V creases flat (|rho| <= flat_fraction x its
+//     largest fold; a weakly folded point) is first pushed off them: those creases are held
+//     at 1e-2 (then 1e-3) x the largest fold on their letter's side and the rest is
+//     Newton-projected; a point that closes with every M/V crease folded its own way is a
+//     strict candidate, traced before the weak one. DOF 1: continue_one_dof
+//     (pseudo-arclength) in the direction that increases the fold (tangent . x > 0).
+//     DOF > 1: by the fold's size (norm_continuation.hpp: ||x||_2 stepped geometrically,
+//     each point the least-distance projection of the scaled previous one), first toward flat
+//     to 1/100 of the candidate's size (the points there must keep their letters), then out;
+//     if that certifies nothing, by projected driving: the driving crease is stepped by
 //     driven_step and the rest Newton-projected (minimum-norm) from the previous point.
 //     The trace is watched by PathWatch (path_watch.hpp) and stops when
 //       - some crease reaches +-tolerances.fold_limit() (~180 deg: local facet
@@ -32,7 +40,8 @@
 //     Every sign change of a crease (PathWatch's semantics: relative to its last sign) is
 //     recorded in sign_switches with the driving crease's value at the crossing.
 //  4. Verdict kRigidlyFoldable if the trace reaches max |rho| >= certificate_fold with
-//     every M/V sign respected, and face placement (place_faces) of the last valid point has
+//     every M/V sign respected (by the fold's size: also back toward flat to 1/100 of the
+//     candidate's size), and face placement (place_faces) of the last valid point has
 //     relative mismatch <= tolerances.placement_mismatch. The certificate is that point.
 //  5. No candidate: the evidence search. At each amplitude eps of evidence_amplitudes
 //     (largest first) and each driving crease, sign-respecting least squares (projected
@@ -178,6 +187,10 @@ struct GeneralVerdict {
   // kContinuationFailed), stop_crease, sign_switches; dof_at_departure is the first-order DOF
   // at the candidate (jacobian_rank, tolerances.rank_cut).
   TracedBranch trace;
+  // DOF > 1: how the trace was followed (empty for DOF 1): by the fold's size, with the
+  // size it reached back toward flat (radians; -1: not traced that way), or by a driving crease.
+  std::string trace_method;
+  double traced_toward_flat_to = -1.0;
   std::vector<SingularPoint> singular_points;
   Eigen::VectorXd certificate_angles;  // last valid point of the path (kRigidlyFoldable)
   double certificate_mismatch = -1.0;  // place_faces relative mismatch there

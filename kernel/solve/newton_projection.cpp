@@ -278,7 +278,11 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
   system.evaluate(result.x, r, J);
   double rnorm = m > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0;
   result.residual_history.push_back(rnorm);
-  if (m == 0 || n == 0) {
+  // Nothing to solve for: no rows, no unknowns, or every unknown held (an empty factorisation).
+  std::vector<int> held = options.held_unknowns;
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  if (m == 0 || n == 0 || static_cast<int>(held.size()) == n) {
     result.converged = rnorm <= options.tolerance;
     return result;
   }

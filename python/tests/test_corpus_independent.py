@@ -641,8 +641,15 @@ def test_corpus_verdict_agrees_with_an_independent_check(rel, tmp_path):
             states.append(rho)
         source = f"straight {letter} line of {count} creases {a} -> {b}, to {final} rad"
     else:
-        states, note = kernel_trace_csv(path, tmp_path)
-        source = "trace --csv --steps 6"
+        samples = [b["sample_states"] for b in check.get("branches", []) if b.get("sample_states")]
+        if samples and not within:
+            # The general model's certificate path, sampled in the JSON (a multi-DOF path is not
+            # exposed by `trace`).
+            states = [np.radians(np.asarray(s["fold_angles_deg"], dtype=float)) for s in samples[0]]
+            note, source = "", f"check --json sample_states ({len(states)} states)"
+        else:
+            states, note = kernel_trace_csv(path, tmp_path)
+            source = "trace --csv --steps 6"
         if states is None:
             # `trace` continues 1-DOF motions only; the certificate of a multi-DOF traced path is not
             # published. Our own search must then find a folded state that keeps the letters.
@@ -670,6 +677,15 @@ def test_corpus_verdict_agrees_with_an_independent_check(rel, tmp_path):
         if np.abs(rho).max() > 1e-6:
             bad = letters_kept(model, rho)
             assert not bad, f"{rel}: {source}, state {s}: creases against their letters {bad[:10]}"
+    strictness = check.get("strictness") or {}
+    if strictness.get("strict") and states:
+        # Strict: at the certificate (the last state) every M/V crease folds its own way, by more
+        # than the kernel's flat fraction of the largest fold.
+        rho = np.where(np.isnan(states[-1]), 0.0, states[-1])
+        cut = strictness["flat_below_fraction_of_max_fold"] * np.abs(rho).max()
+        flat = [e for e, c in enumerate(model.letters)
+                if (c == "V" and not rho[e] > cut) or (c == "M" and not rho[e] < -cut)]
+        assert not flat, f"{rel}: the kernel says strict, but at its certificate these M/V creases stay flat or turn: {flat[:10]}"
     print(f"  {rel}: certificate ({source}): {len(states)} states, worst vertex closure {worst:.3g} rad "
           f"(allowed {bound.min() if len(bound) else 0:.3g} .. {bound.max() if len(bound) else 0:.3g} rad: {how})")
 

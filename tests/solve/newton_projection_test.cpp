@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numbers>
 #include <random>
 
 #include "data/generators/miura.hpp"
@@ -126,6 +127,26 @@ TEST(SolverNewton, ReportsNonConvergenceWithoutThrowing) {
 // A perturbed Miura with a crease held at a fold has no solution: Gauss-Newton settles on
 // a least-squares plateau. With the stall test it stops there early, at the same least
 // residual (within 1%) as the full 60-step run; a converging projection is not cut short.
+// Every unknown held (listed twice, too): nothing to solve for. It used to crash in the
+// factorisation of an empty system; now the start is returned, converged iff it closes.
+TEST(SolverNewton, EveryUnknownHeldReturnsTheStart) {
+  const double q = std::numbers::pi / 2;
+  const CreasePattern p = testing::single_vertex_pattern({0.0, q, 2 * q, 3 * q});
+  const ClosureSystem sys(p, build_topology(p));
+  NewtonOptions opt;
+  opt.held_unknowns = {0, 1, 2, 3, 1};
+  Eigen::VectorXd closed(4), open(4);
+  closed << 0.5, 0, 0.5, 0;  // one straight line folded: closes exactly
+  open << 0.5, 0.1, 0.5, 0;
+  const NewtonResult a = newton_project(sys, closed, opt);
+  EXPECT_TRUE(a.converged);
+  EXPECT_EQ(a.iterations, 0);
+  EXPECT_EQ(a.x, closed);
+  const NewtonResult b = newton_project(sys, open, opt);
+  EXPECT_FALSE(b.converged);
+  EXPECT_EQ(b.x, open);
+}
+
 TEST(SolverNewton, StallTestStopsOnAPlateauButNotWhileConverging) {
   generators::MiuraParams m;
   m.rows = m.cols = 6;
