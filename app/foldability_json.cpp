@@ -1,8 +1,5 @@
 #include "app/foldability_json.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::cli {
@@ -66,16 +63,9 @@ Json branch_json(const TracedBranch& b, const FoldabilityReport& r) {
   jb["points"] = b.path.size();
   if (b.valid_points >= 0) jb["valid_points"] = b.valid_points;
   jb["mv_switches"] = switches_json(b.sign_switches);
-  if (r.model == FoldabilityModel::kGeneralLoopClosure && b.valid_points > 0) {
-    // A few states of the valid part, first and last included, for replay by other tools
-    // (a multi-DOF path is not exposed by `trace`).
-    Json states = Json::array();
-    const int count = std::min(b.valid_points, 6);
-    for (int k = 0; k < count; ++k) {
-      const int i = count == 1 ? b.valid_points - 1 : static_cast<int>(std::lround(double(k) * (b.valid_points - 1) / (count - 1)));
-      states.push_back({{"point", i}, {"fold_angles_deg", degrees(b.path[static_cast<std::size_t>(i)])}});
-    }
-    jb["sample_states"] = std::move(states);
+  if (!b.linear_solver.empty()) {
+    jb["linear_solver"] = b.linear_solver;
+    jb["factorizations"] = b.factorizations;
   }
   if (r.model != FoldabilityModel::kMultiplierPropagation) {
     Json gi = nullptr;
@@ -228,6 +218,13 @@ Json foldability_json(const FoldabilityReport& r) {
                                                     "no motion from flat folds all four creases there (proof)"},
                        {"meaning", r.strictness->strict ? "every M/V crease folds (strict)"
                                                         : "weak: the listed M/V creases stay flat"}};
+  if (!r.certificate_samples.empty()) {
+    // The certifying path, sampled, for replay by other tools (a multi-DOF path is not
+    // exposed by `trace`).
+    Json states = Json::array();
+    for (const Eigen::VectorXd& rho : r.certificate_samples) states.push_back(degrees(rho));
+    j["certificate_states_deg"] = std::move(states);
+  }
   if (!r.search_evidence.empty()) {
     Json ev = Json::array();
     for (const AmplitudeEvidence& e : r.search_evidence)

@@ -171,6 +171,8 @@ class Explorer {
       return static_cast<int>(br.path.size()) >= opt_.max_points_per_branch;
     };
     const ContinuationResult cr = continue_one_dof(sys_, leave.x, dep.direction, accept, opt_.continuation);
+    br.linear_solver = cr.linear_solver;
+    br.factorizations = cr.stats.factorizations;
     if (br.path.size() == 1) {
       // Not traced (e.g. more than 1 DOF just off the point): keep the departure point and its DOF.
       record(br, watch, leave.x);

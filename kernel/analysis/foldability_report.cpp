@@ -1,5 +1,6 @@
 #include "kernel/analysis/foldability_report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -319,6 +320,18 @@ bool first_order_loop_gain_report(const CreasePattern& p, const Topology& t, con
 }
 
 // 3. The general loop-closure verdict, with the branch explorer where it applies.
+// Up to 6 states of path[0 .. count), evenly spread, the first and the last included.
+std::vector<Eigen::VectorXd> sample_path(const std::vector<Eigen::VectorXd>& path, int count) {
+  count = std::min<int>(count, static_cast<int>(path.size()));
+  std::vector<Eigen::VectorXd> out;
+  const int samples = std::min(count, 6);
+  for (int k = 0; k < samples; ++k) {
+    const int i = samples == 1 ? count - 1 : static_cast<int>(std::lround(double(k) * (count - 1) / (samples - 1)));
+    out.push_back(path[static_cast<std::size_t>(i)]);
+  }
+  return out;
+}
+
 void general_report(const CreasePattern& p, const Topology& t, const FoldabilityOptions& o, FoldabilityReport& r) {
   GeneralVerdictOptions go;
   go.use_assignment = o.use_assignment;
@@ -339,7 +352,10 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   r.search_evidence = g.evidence;
   r.residual_growth_exponent = g.growth_exponent;
   r.max_residual = g.trace.max_residual;
-  if (g.verdict == Verdict::kRigidlyFoldable) r.certificate_mismatch = g.certificate_mismatch;
+  if (g.verdict == Verdict::kRigidlyFoldable) {
+    r.certificate_mismatch = g.certificate_mismatch;
+    r.certificate_samples = sample_path(g.trace.path, g.trace.valid_points);
+  }
   if (g.verdict == Verdict::kNotRigidlyFoldable || (g.verdict == Verdict::kUndecided && g.least_residual >= 0)) {
     FoldabilityObstruction ob;
     ob.kind = g.is_proof ? "no foldable crease"
@@ -397,6 +413,7 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
     const int last = (certified->global_interference_index >= 0 ? certified->global_interference_index
                                                                  : static_cast<int>(certified->path.size())) - 1;
     if (last >= 0) r.strictness = strictness_at(p, certified->path[last]);
+    r.certificate_samples = sample_path(certified->path, last + 1);
     r.reason = "branch " + std::to_string(certified->id) +
                " of the branch explorer leaves the flat state, keeps every letter and reaches the certificate fold; " +
                g.reason;
@@ -458,6 +475,7 @@ void straight_line_report(const CreasePattern& p, const Topology& t, const Folda
   r.max_residual = std::max(r.max_residual, line.max_residual);
   r.obstruction.reset();
   r.strictness = strictness_at(p, line.path.back());
+  r.certificate_samples = sample_path(line.path, static_cast<int>(line.path.size()));
   r.strictness->strict_obstruction_vertices = lines.strict_obstruction_vertices;
   std::string verts;
   r.reason = "the straight crease line of " + std::to_string(line.creases.size()) + " creases from boundary vertex " +

@@ -116,6 +116,10 @@ struct FoldabilityReport {
   // General model, foldable by the search's certificate: strict (every M/V crease folds) or
   // weak (the listed lettered creases stay flat). Empty on other models and verdicts.
   std::optional<StrictnessReport> strictness;
+  // General model, foldable: up to 6 states of the certifying path (per-edge fold angles,
+  // radians; its first and last valid points included), for replay by other tools. Empty on
+  // other models and verdicts.
+  std::vector<Eigen::VectorXd> certificate_samples;
   // General model, no folded point found: the least sign-respecting closure residual at
   // each fold amplitude and its growth exponent (general_verdict.hpp, step 5) - the
   // evidence behind "not foldable (evidence)" or "undecided".

@@ -160,18 +160,21 @@ double trace_by_fold_size(const ClosureSystem& sys, const Eigen::VectorXd& x0, c
   double reached = x0.norm();
   // The margin keeps the letters; a point that breaks one anyway (a crease moved past its
   // margin within the corrector's tolerance) ends the leg toward flat there.
-  continue_by_norm(sys, x0, lower, upper, no, [&](const Eigen::VectorXd& x) {
+  const NormContinuationResult in = continue_by_norm(sys, x0, lower, upper, no, [&](const Eigen::VectorXd& x) {
     if (first_crease_against_letter(sign, sys.edges_from_unknowns(x), opt.tolerances.sign_threshold) >= 0) return true;
     inward.push_back(x);
     reached = x.norm();
     return false;
   });
+  tr.trace.linear_solver = "direct (CHOLMOD, Levenberg-Marquardt corrector at each fold size)";
+  tr.trace.factorizations = in.factorizations;
   for (auto it = inward.rbegin(); it != inward.rend(); ++it)
     if (tr.accept(*it)) return reached;
   if (tr.accept(x0)) return reached;
   no.target_size = std::sqrt(static_cast<double>(n)) * std::numbers::pi;  // beyond any fold: the tracer stops first
   no.max_points = std::max(1, opt.max_path_points - static_cast<int>(tr.trace.path.size()));
   const NormContinuationResult outward = continue_by_norm(sys, x0, lower, upper, no, accept);
+  tr.trace.factorizations += outward.factorizations;
   if (tr.trace.stopped_by == StopReason::kNone) {
     tr.stop(StopReason::kContinuationFailed);
     tr.trace.stop_message = "fold-size continuation: " + outward.reason;
@@ -188,6 +191,8 @@ void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0
   NewtonOptions nopt;
   nopt.tolerance = opt.tolerances.residual;
   nopt.held_unknowns = {k};
+  tr.trace.linear_solver = "direct (CHOLMOD, minimum-norm Newton with the driving crease held)";
+  tr.trace.factorizations = 0;
   bool stop = tr.accept(x);
   while (!stop) {
     // Predictor: scale the whole point with the driving crease (keeps its shape and
@@ -196,6 +201,7 @@ void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0
     const double target = std::abs(x[k]) + opt.driven_step >= limit ? dir * limit : x[k] + dir * opt.driven_step;
     const Eigen::VectorXd xp = x * (target / x[k]);
     const NewtonResult nr = newton_project(sys, xp, nopt);
+    tr.trace.factorizations += nr.factorizations;
     if (!nr.converged) {
       tr.stop(StopReason::kCorrectorFailed);
       break;
@@ -508,6 +514,8 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       if (method == TraceMethod::kOneDof) {
         if (n <= opt.singular_detection_limit) tr.start_bordered(cand.x, cand.x);
         const ContinuationResult cr = continue_one_dof(sys, cand.x, cand.x, accept, opt.continuation);
+        trial.trace.linear_solver = cr.linear_solver;
+        trial.trace.factorizations = cr.stats.factorizations;
         if (trial.trace.stopped_by == StopReason::kNone) {
           trial.trace.stopped_by = StopReason::kContinuationFailed;
           trial.trace.stop_message = cr.reason;

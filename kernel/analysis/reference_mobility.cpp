@@ -160,6 +160,8 @@ ReferenceMobility reference_mobility(const CreasePattern& p, const Topology& t, 
         const ContinuationResult cr = continue_one_dof(
             sys, x0, direction, [&](const Eigen::VectorXd& x) { return watch.stop_at(x); }, copt);
         for (const ContinuationPoint& pt : cr.points) b.max_residual = std::max(b.max_residual, pt.residual);
+        b.linear_solver = cr.linear_solver;
+        b.factorizations = cr.stats.factorizations;
         if (b.stopped_by == StopReason::kNone) {
           b.stopped_by = cr.stopped ? StopReason::kMaxPoints : StopReason::kContinuationFailed;
           b.stop_message = cr.reason;

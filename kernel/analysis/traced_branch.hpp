@@ -68,6 +68,10 @@ struct TracedBranch {
   // Leading points of `path` that are a valid motion (letters kept where they count, no face
   // crossing, no fold past 180 deg). -1: not computed by this tracer.
   int valid_points = -1;
+  // The tracer's linear algebra, in words (e.g. ContinuationResult::linear_solver), and its
+  // numeric factorisations; empty and -1 when the tracer does not say.
+  std::string linear_solver;
+  int factorizations = -1;
 
   // "fold limit", or "fold limit (detail)" when the tracer left a message.
   std::string stop_text() const;

@@ -57,6 +57,7 @@ NormContinuationResult continue_by_norm(const ClosureSystem& sys, const Eigen::V
     Eigen::VectorXd lo, hi;
     box(next, lo, hi);
     const AmplitudeSearchResult ar = amplitude_search(sys, x * (next / s), lo, hi, ao);
+    out.factorizations += ar.factorizations;
     if (!ar.converged) {
       ++out.rejected_steps;
       h = step / 2;
@@ -71,6 +72,7 @@ NormContinuationResult continue_by_norm(const ClosureSystem& sys, const Eigen::V
     for (int i = 0; i < n; ++i)
       if (ar.x[i] <= lo[i] || ar.x[i] >= hi[i]) nopt.held_unknowns.push_back(i);
     const NewtonResult polished = newton_project(sys, ar.x, nopt);
+    out.factorizations += polished.factorizations;
     // The polish moves the size by about its step (~ residual / sigma_min): the point's own
     // size is the parameter from here on.
     const bool better = polished.residual_history.back() < polished.residual_history.front();

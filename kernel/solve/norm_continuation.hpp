@@ -57,6 +57,7 @@ struct NormContinuationResult {
   int points = 0;            // accepted points (the start not counted)
   int rejected_steps = 0;    // corrector failures (each halves h)
   double last_size = 0.0;    // ||x||_2 of the last accepted point (radians)
+  int factorizations = 0;    // numeric (CHOLMOD) factorisations of the correctors and polishes
   std::string reason;        // why it stopped, in words
 };
 

@@ -641,12 +641,12 @@ def test_corpus_verdict_agrees_with_an_independent_check(rel, tmp_path):
             states.append(rho)
         source = f"straight {letter} line of {count} creases {a} -> {b}, to {final} rad"
     else:
-        samples = [b["sample_states"] for b in check.get("branches", []) if b.get("sample_states")]
+        samples = check.get("certificate_states_deg")
         if samples and not within:
-            # The general model's certificate path, sampled in the JSON (a multi-DOF path is not
+            # The general model's certifying path, sampled in the JSON (a multi-DOF path is not
             # exposed by `trace`).
-            states = [np.radians(np.asarray(s["fold_angles_deg"], dtype=float)) for s in samples[0]]
-            note, source = "", f"check --json sample_states ({len(states)} states)"
+            states = [np.radians(np.asarray(s, dtype=float)) for s in samples]
+            note, source = "", f"check --json certificate_states_deg ({len(states)} states)"
         else:
             states, note = kernel_trace_csv(path, tmp_path)
             source = "trace --csv --steps 6"

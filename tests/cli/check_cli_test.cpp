@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "data/generators/miura.hpp"
 #include "data/generators/miura_tube.hpp"
 #include "data/generators/square_twist.hpp"
 #include "kernel/pattern/fold_io.hpp"
+#include "kernel/pattern/topology.hpp"
+#include "kernel/closure/closure_system.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
@@ -93,6 +96,34 @@ TEST(CheckCli, BothModelsAgreeOnMiuraAndSquareTwists) {
   EXPECT_EQ(exact["rigidly_foldable"], general["rigidly_foldable"]);
   EXPECT_EQ(exact["dof"], general["dof"]);
   EXPECT_LE(general["max_residual"].get<double>(), 1e-12);
+  // The general model's branches say which linear solver traced them and how many
+  // factorisations it took (issue 11); the certifying path is published, sampled, and its
+  // states close (replayable by other tools).
+  ASSERT_FALSE(general["branches"].empty());
+  int traced = 0;
+  for (const auto& b : general["branches"]) {
+    if (b["points"].get<int>() < 10) continue;
+    ++traced;
+    EXPECT_EQ(b["linear_solver"], "direct (CHOLMOD)");
+    EXPECT_GT(b["factorizations"].get<int>(), 0);
+  }
+  EXPECT_GE(traced, 2);
+  const CreasePattern miura = generators::miura_ori(m);
+  ASSERT_TRUE(general.contains("certificate_states_deg"));
+  const auto& states = general["certificate_states_deg"];
+  ASSERT_GE(states.size(), 2u);
+  const Topology topo = build_topology(miura);
+  const ClosureSystem sys(miura, topo);
+  double largest = 0;
+  for (const auto& state : states) {
+    ASSERT_EQ(state.size(), static_cast<std::size_t>(miura.num_edges()));
+    Eigen::VectorXd rho(miura.num_edges());
+    for (int e = 0; e < miura.num_edges(); ++e) rho[e] = state[e].get<double>() * std::numbers::pi / 180;
+    EXPECT_LE(sys.residual(sys.unknowns_from_edges(rho)).lpNorm<Eigen::Infinity>(), 1e-11);
+    largest = std::max(largest, rho.cwiseAbs().maxCoeff());
+  }
+  EXPECT_GE(largest, std::numbers::pi / 6);  // the certificate fold
+  EXPECT_FALSE(exact.contains("certificate_states_deg"));  // multiplier model: its closed-form family
   generators::SquareTwistParams params;
   params.twist = 40 * 3.141592653589793 / 180;
   using T = generators::SquareTwistType;
