@@ -712,6 +712,23 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
     r.reason = std::string("no solver applies to this pattern: ") + e.what();
   }
   if (topology.components.size() > 1) check_pieces(pattern, topology, options, r);
+  // Letters ignored and no motion found: a motion that keeps the letters is one with them
+  // ignored too, so the lettered check's yes, when it has one, is the answer here (a rounded
+  // Miura-ori's witness is decided by the multiplier model only with its letters).
+  const bool lettered = std::any_of(pattern.assignments.begin(), pattern.assignments.end(),
+                                    [](Assignment a) { return assigned_fold_sign(a) != 0; });
+  if (!options.use_assignment && !r.foldable() && lettered) {
+    FoldabilityOptions keep_letters = options;
+    keep_letters.use_assignment = true;
+    FoldabilityReport with = check_foldability(pattern, topology, keep_letters);
+    if (with.foldable()) {
+      with.assignment_used = false;
+      with.model_choice = "letters ignored: " + r.model_choice + " - " + r.reason +
+                          "; a motion that keeps the letters is a motion with them ignored, so the check with the "
+                          "letters answers: " + with.model_choice;
+      r = std::move(with);
+    }
+  }
   r.seconds = seconds_since(start);
   return r;
 }

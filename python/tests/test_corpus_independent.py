@@ -20,17 +20,25 @@ come from rigidfold. Everything else is numpy/scipy in this file:
   iterative trust-region solver stalls near 1e-6 on thousands of creases; the polish reaches 1e-15
   where a folded state exists).
 
+Every file is checked twice: with its letters (`check FILE --json`) and with them ignored
+(`check FILE --ignore-assignment --json`: our bounds and letter checks then treat every M/V crease as
+U, and a certificate is replayed from `certificate_states_deg` or `trace`); the two verdicts must be
+consistent (a motion that keeps the letters is one without them: a lettered yes is a yes without
+letters, and a "not foldable" without letters is no lettered yes).
+
 What is compared, per verdict class (the kernel's `check FILE --json`):
 
 - foldable: the kernel's certificate is replayed. A straight crease line ("the straight crease
   line of N creases from boundary vertex A to boundary vertex B folds alone ... as a valley") is
   found again here by walking from A straight through interior vertices (sector sums pi on both
   sides, from our own sectors) to B, folded to 6 angles up to the reason's final angle, every other
-  crease flat; a traced 1-DOF motion (`trace FILE --csv --steps 6`) is read from the CSV. At every
-  state every interior vertex must close to <= 1e-9 rad under our closure and the letters must keep
-  their signs (M <= 1e-9, V >= -1e-9). Where `trace` does not expose the certificate (a multi-DOF
-  traced path: `trace` continues 1-DOF motions only), our own search must find a folded state
-  (amplitude eps in {0.1, 1.0} rad) that keeps the letters and closes to <= 1e-10 rad.
+  crease flat; a general-model certificate is read from `certificate_states_deg` (up to 6 states
+  of its path, multi-DOF paths included), other traced motions from `trace FILE --csv --steps 6`. At
+  every state every interior vertex must close to <= 1e-9 rad under our closure and the letters
+  must keep their signs (M <= 1e-9, V >= -1e-9); where the kernel says "strict", every M/V crease
+  at the last state folds its own way by more than the stated fraction of the largest fold. Where
+  neither exposes a state, our own search must find a folded state (amplitude eps in {0.1, 1.0}
+  rad) that keeps the letters and closes to <= 1e-10 rad.
 - foldable within the input's precision: the kernel certifies a witness pattern near the file's
   numbers. Its traced states are checked on the file's own coordinates against the closure gap
   the stated precision allows, derived here: a sector error d changes the rotation angle of the
@@ -109,10 +117,10 @@ def corpus_files():
 # the kernel's published outputs
 
 @lru_cache(maxsize=None)
-def kernel_check(rel):
+def kernel_check(rel, letters=True):
     path = os.path.join(CORPUS, rel)
-    out = subprocess.run([cli_path(), "check", path, "--json"], check=True, capture_output=True,
-                         text=True).stdout
+    out = subprocess.run([cli_path(), "check", path, "--json"] + ([] if letters else ["--ignore-assignment"]),
+                         check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 
 
@@ -569,12 +577,32 @@ def with_xfail(rel):
 
 @pytest.mark.parametrize("rel", [with_xfail(rel) for rel in corpus_files()])
 def test_corpus_verdict_agrees_with_an_independent_check(rel, tmp_path):
+    verify_verdict(rel, True, tmp_path)
+
+
+@pytest.mark.parametrize("rel", [with_xfail(rel) for rel in corpus_files()])
+def test_corpus_verdict_without_letters_agrees_with_an_independent_check(rel, tmp_path):
+    """The same checks on `check --ignore-assignment` (every M/V crease may fold either way; our
+    search's bounds and letter checks then see U), and the two verdicts must be consistent: a
+    motion that keeps the letters is one without them."""
+    lettered, free = kernel_check(rel)["verdict_class"], kernel_check(rel, False)["verdict_class"]
+    if lettered.startswith("foldable"):
+        assert free.startswith("foldable"), (rel, lettered, free)
+    if free.startswith("not foldable"):
+        assert not lettered.startswith("foldable"), (rel, lettered, free)
+    verify_verdict(rel, False, tmp_path)
+
+
+def verify_verdict(rel, letters, tmp_path):
     path = os.path.join(CORPUS, rel)
-    check = kernel_check(rel)
+    check = kernel_check(rel, letters)
     verdict = check["verdict_class"]
     model = Model(rigidfold.load(path))
+    if not letters:
+        model.letters = ["U" if c in "MV" else c for c in model.letters]
     closure = Closure(model, [])
-    print(f"{rel}: {verdict}; {closure.nv} interior vertices, {model.E} edges")
+    print(f"{rel} ({'letters' if letters else 'letters ignored'}): {verdict}; {closure.nv} interior vertices, "
+          f"{model.E} edges")
 
     if verdict == "undecided":
         assert check["is_proof"] is False, f"{rel}: an undecided verdict flagged as a proof"
@@ -627,7 +655,7 @@ def test_corpus_verdict_agrees_with_an_independent_check(rel, tmp_path):
     else:
         bound, how = np.full(closure.nv, CLOSE_TOL), f"{CLOSE_TOL:g} rad"
 
-    m = LINE.search(check["reason"])
+    m = LINE.search(check["reason"]) if letters else None
     if m:
         count, a, b = int(m.group(1)), int(m.group(2)), int(m.group(3))
         letter = "V" if m.group(4) == "valley" else "M"
@@ -678,7 +706,7 @@ def test_corpus_verdict_agrees_with_an_independent_check(rel, tmp_path):
             bad = letters_kept(model, rho)
             assert not bad, f"{rel}: {source}, state {s}: creases against their letters {bad[:10]}"
     strictness = check.get("strictness") or {}
-    if strictness.get("strict") and states:
+    if letters and strictness.get("strict") and states:
         # Strict: at the certificate (the last state) every M/V crease folds its own way, by more
         # than the kernel's flat fraction of the largest fold.
         rho = np.where(np.isnan(states[-1]), 0.0, states[-1])

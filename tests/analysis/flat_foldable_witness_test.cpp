@@ -127,6 +127,17 @@ TEST(FlatFoldableWitness, RoundedMiuraWithCyclesFoldsOnceTheLoopGainsAreClosedTo
   EXPECT_LE(r.input_precision->max_change_ratio, 1.0);
   EXPECT_LE(r.max_residual, r.tolerances.certificate_residual);
 
+  // With the letters ignored the witness has no one mode per vertex to close the cycles with,
+  // but the lettered motion is a motion without letters too: the same answer, saying why.
+  FoldabilityOptions any_signs;
+  any_signs.use_assignment = false;
+  const FoldabilityReport ignored = check_foldability(p, t, any_signs);
+  EXPECT_EQ(ignored.verdict, FoldabilityClass::kFoldableWithinTolerance) << ignored.reason;
+  EXPECT_FALSE(ignored.assignment_used);
+  EXPECT_EQ(ignored.dof, 1);
+  EXPECT_NE(ignored.model_choice.find("a motion that keeps the letters is a motion with them ignored"), std::string::npos)
+      << ignored.model_choice;
+
   // The same solve called directly, checked independently.
   std::vector<FlatFoldMode> modes;
   for (int v : first->witness_topology.interior_vertices) {
