@@ -13,6 +13,8 @@
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/closure/closure_system.hpp"
+#include "data/generators/waterbomb.hpp"
+#include "tests/closure/closure_test_utils.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
@@ -132,6 +134,26 @@ TEST(CheckCli, BothModelsAgreeOnMiuraAndSquareTwists) {
     const auto b = check(generators::square_twist(params, type), "twist", "--general");
     EXPECT_EQ(a["rigidly_foldable"], b["rigidly_foldable"]) << generators::to_string(type);
   }
+}
+
+// The strict question answered on its own (issue 12): certified where the certificate folds
+// every M/V crease (the waterbomb base), disproved where straight lettered lines cross (a
+// degree-4 vertex of two straight lines, one valley and one mountain: each folds alone).
+TEST(CheckCli, SaysWhetherFoldingIsStrict) {
+  const auto waterbomb = check(generators::waterbomb_base({}), "waterbomb");
+  EXPECT_EQ(waterbomb["verdict_class"], "foldable");
+  EXPECT_EQ(waterbomb["strictness"]["strict"], true);
+  EXPECT_EQ(waterbomb["strictness"]["strict_verdict"], "strictly foldable (certified: the certificate folds every M/V crease)");
+  const double q = std::numbers::pi / 2;
+  CreasePattern cross = testing::single_vertex_pattern({0.0, q, 2 * q, 3 * q});
+  for (int e : {0, 2}) cross.assignments[e] = Assignment::Valley;
+  for (int e : {1, 3}) cross.assignments[e] = Assignment::Mountain;
+  const auto crossing = check(cross, "crossing");
+  EXPECT_EQ(crossing["verdict_class"], "foldable");
+  EXPECT_EQ(crossing["strictness"]["strict"], false);
+  EXPECT_EQ(crossing["strictness"]["flat_lettered_creases"].size(), 2u);
+  EXPECT_EQ(crossing["strictness"]["strict_obstruction_vertices"], nlohmann::json::array({0}));
+  EXPECT_EQ(crossing["strictness"]["strict_verdict"], "not strictly foldable (proof: straight lettered lines cross)");
 }
 
 TEST(CheckCli, BadInputExitsTwo) {
