@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "kernel/math/so3.hpp"
+#include "kernel/pattern/vertex_boxes.hpp"
 
 namespace rigidfold {
 
@@ -31,10 +32,34 @@ std::vector<std::vector<double>> sector_rounding_bounds(const CreasePattern& p, 
   return out;
 }
 
+namespace {
+
+// The precision the bound uses: the verdicts' (input_precision: stated, or read off the
+// digits), except for an SVG's drawn points, whose vertices are computed (means of the drawn
+// ends, crossings) and carry no digits of their own: there each vertex may lie anywhere in its
+// box (vertex_boxes.hpp), i.e. up to its largest distance to the box's sides per coordinate.
+CoordinatePrecision residual_precision(const CreasePattern& p, std::optional<double> stated_tolerance) {
+  if (stated_tolerance || !p.position_bounds.covers(p.num_vertices())) return input_precision(p, stated_tolerance);
+  const VertexBoxes boxes = vertex_boxes(p, stated_tolerance);
+  CoordinatePrecision c;
+  c.rounded = true;
+  c.vertex_rounding.assign(p.num_vertices(), 0.0);
+  for (int i = 0; i < p.num_vertices(); ++i) {
+    for (int k = 0; k < 2; ++k) {
+      const double x = p.vertices[i][k];
+      c.vertex_rounding[i] = std::max({c.vertex_rounding[i], x - boxes.lo[i][k], boxes.hi[i][k] - x});
+    }
+    c.max_rounding = std::max(c.max_rounding, c.vertex_rounding[i]);
+  }
+  return c;
+}
+
+}  // namespace
+
 RoundingResidualCheck rounding_explains_residual(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& rho,
                                                  std::optional<double> stated_tolerance) {
   RoundingResidualCheck out;
-  const CoordinatePrecision precision = input_precision(p, stated_tolerance);
+  const CoordinatePrecision precision = residual_precision(p, stated_tolerance);
   const std::vector<std::vector<double>> bounds = sector_rounding_bounds(p, t, precision);
   for (std::size_t k = 0; k < t.interior_vertices.size(); ++k) {
     const int v = t.interior_vertices[k];

@@ -35,7 +35,8 @@ struct RoundingResidualCheck {
 };
 
 // Inputs: the pattern, its topology, per-edge fold angles rho (radians) of a state;
-// stated_tolerance: the user's bound on each coordinate (input_precision; nullopt: the digits).
+// stated_tolerance: the user's bound on each coordinate (input_precision; nullopt: the digits,
+// or for an SVG the box of the points drawn for each vertex, vertex_boxes.hpp).
 RoundingResidualCheck rounding_explains_residual(const CreasePattern& pattern, const Topology& topology,
                                                  const Eigen::VectorXd& rho,
                                                  std::optional<double> stated_tolerance = std::nullopt);

@@ -104,6 +104,38 @@ TEST(RoundingResidualBound, AGeometricGapIsNotExplained) {
   EXPECT_GT(c.worst_ratio, 100.0);
 }
 
+// An SVG's vertices are computed from the drawn points (means, crossings) and carry no digits
+// of their own; the bound must come from the box of the points drawn for each vertex. A Miura
+// whose vertices moved by up to 1e-3 (full-precision numbers), each box +-2e-3 about the true
+// vertex: the gap at the true pattern's states is explained by the boxes; without them the
+// numbers read as exact and the same gap is not.
+TEST(RoundingResidualBound, AnSvgsDrawnBoxesBoundItsComputedVertices) {
+  const generators::MiuraParams m = miura_3x3();
+  const CreasePattern exact = generators::miura_ori(m);
+  CreasePattern drawn = exact;
+  SplitMix64 rng{3};
+  const double w = 1e-3;
+  drawn.position_bounds.lo.resize(exact.vertices.size());
+  drawn.position_bounds.hi.resize(exact.vertices.size());
+  for (std::size_t i = 0; i < exact.vertices.size(); ++i) {
+    for (int k = 0; k < 2; ++k) drawn.vertices[i][k] += w * (2 * rng.uniform() - 1);
+    drawn.position_bounds.lo[i] = exact.vertices[i].head<2>() - Eigen::Vector2d::Constant(2 * w);
+    drawn.position_bounds.hi[i] = exact.vertices[i].head<2>() + Eigen::Vector2d::Constant(2 * w);
+  }
+  drawn.position_bounds.max_half_width = 2 * w;
+  CreasePattern undrawn = drawn;
+  undrawn.position_bounds = {};
+  const Topology t = build_topology(drawn);
+  for (double fold : {0.1, 0.5}) {
+    const Eigen::VectorXd rho = testing::miura_edge_angles(exact, m, fold);
+    ASSERT_GT(max_vertex_closure_residual(t, rho), 1e-6);
+    const RoundingResidualCheck with_boxes = rounding_explains_residual(drawn, t, rho);
+    EXPECT_TRUE(with_boxes.explained) << fold << ": ratio " << with_boxes.worst_ratio;
+    const RoundingResidualCheck as_numbers = rounding_explains_residual(undrawn, t, rho);
+    EXPECT_FALSE(as_numbers.explained) << fold << ": ratio " << as_numbers.worst_ratio;
+  }
+}
+
 // The norm search finds the Miura's one motion at the size asked for, from a letter-respecting
 // start, with no crease held: the closed form's state at the same norm.
 TEST(AmplitudeSearch, FindsTheMiuraStateOfTheGivenNorm) {
