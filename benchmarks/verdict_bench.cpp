@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "data/generators/miura.hpp"
+#include "data/generators/waterbomb_tessellation.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
@@ -117,6 +118,25 @@ void BM_GeneralVerdictJitteredMiura(benchmark::State& state) {
   state.SetLabel(to_string(v.verdict));
 }
 
+// The multi-DOF case (issue 11, item 4): the general verdict on an n x n waterbomb
+// tessellation (2 (rows + cols) - 3 DOF), certified by the fold-size trace.
+void BM_GeneralVerdictWaterbombTessellation(benchmark::State& state) {
+  generators::WaterbombTessellationParams params;
+  params.rows = params.cols = static_cast<int>(state.range(0));
+  const CreasePattern p = generators::waterbomb_tessellation(params);
+  const Topology t = build_topology(p);
+  GeneralVerdict v;
+  for (auto _ : state) v = general_verdict(p, t);
+  state.counters["edges"] = p.num_edges();
+  state.counters["foldable"] = v.verdict == Verdict::kRigidlyFoldable;
+  state.counters["strict"] = v.strictness.strict;
+  state.counters["dof"] = v.trace.dof_at_departure;
+  state.counters["points"] = static_cast<double>(v.trace.path.size());
+  state.counters["factorizations"] = v.trace.factorizations;
+  state.counters["max_residual"] = v.trace.max_residual;
+  state.SetLabel(std::string(to_string(v.verdict)) + (v.trace_method.empty() ? "" : ", " + v.trace_method));
+}
+
 void register_general_cases() {
   for (const std::filesystem::path& file : corpus_files())
     benchmark::RegisterBenchmark(
@@ -125,6 +145,9 @@ void register_general_cases() {
         ->Unit(benchmark::kMillisecond)->Iterations(1);
   for (int n : {30, 100, 200})
     benchmark::RegisterBenchmark("BM_GeneralVerdictJitteredMiura", BM_GeneralVerdictJitteredMiura)
+        ->Arg(n)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
+  for (int n : {8, 16, 32})
+    benchmark::RegisterBenchmark("BM_GeneralVerdictWaterbombTessellation", BM_GeneralVerdictWaterbombTessellation)
         ->Arg(n)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
 }
 

@@ -249,6 +249,22 @@ def general_cases_section(fams):
             out.append(f"| {cells(r)} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | {r.get('label', '')} | "
                        f"{fmt(r.get('growth_exponent'))} | {res} |")
         out.append("")
+    wb = sorted(fams.get("BM_GeneralVerdictWaterbombTessellation", []), key=lambda r: r.get("edges", 0))
+    if wb:
+        out += ["General verdict on an n x n waterbomb tessellation (multi-DOF: 2 (rows + cols) - 3 DOF), certified "
+                "by the fold-size trace (toward flat to 1/100 of the candidate's size and out to the fold limit):", "",
+                "| n | creases | wall s | verdict, trace | DOF | strict | points | factorisations | max residual |",
+                "|---|---|---|---|---|---|---|---|---|"]
+        for r in wb:
+            out.append(f"| {cells(r)} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | {r.get('label', '')} | "
+                       f"{r.get('dof', 0):.0f} | {'yes' if r.get('strict') else 'no'} | {r.get('points', 0):.0f} | "
+                       f"{r.get('factorizations', 0):.0f} | {fmt(r.get('max_residual'))} |")
+        if len(wb) >= 2:
+            a, b = wb[-2], wb[-1]
+            p = math.log(seconds(b)[0] / seconds(a)[0]) / math.log(b["edges"] / a["edges"])
+            out.append("")
+            out.append(f"Time grows like creases^{p:.2f} between the two largest.")
+        out.append("")
     return out
 
 
