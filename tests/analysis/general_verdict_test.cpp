@@ -18,6 +18,7 @@
 #include "data/generators/miura.hpp"
 #include "data/generators/square_twist.hpp"
 #include "data/generators/waterbomb.hpp"
+#include "data/generators/waterbomb_tessellation.hpp"
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
@@ -130,6 +131,37 @@ TEST(GeneralVerdictWaterbomb, BaseFolds) {
   EXPECT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
   EXPECT_EQ(g.trace.dof_at_departure, 5);
   EXPECT_LE(g.certificate_mismatch, 1e-10);
+}
+
+// The multi-DOF trace by the fold's size (norm_continuation.hpp), at the verdict's level: a 6 x 6
+// waterbomb tessellation (21 DOF) is certified strictly foldable by a path that starts within
+// 1/100 of the candidate's size of flat, keeps every letter at every point and closes to 1e-12.
+TEST(GeneralVerdictWaterbomb, TessellationIsStrictlyFoldableByTheFoldSizeTrace) {
+  generators::WaterbombTessellationParams wp;
+  wp.rows = wp.cols = 6;
+  const CreasePattern p = generators::waterbomb_tessellation(wp);
+  const Topology t = build_topology(p);
+  const GeneralVerdict g = general_verdict(p, t);
+  print("waterbomb tessellation 6x6", g);
+  ASSERT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
+  EXPECT_EQ(g.trace.dof_at_departure, 2 * (wp.rows + wp.cols) - 3);
+  EXPECT_NE(g.trace_method.find("fold size"), std::string::npos) << g.trace_method;
+  EXPECT_TRUE(g.strictness.strict);
+  EXPECT_LE(g.trace.max_residual, 1e-12);
+  EXPECT_LE(g.certificate_mismatch, 1e-10);
+  ASSERT_GE(g.trace.path.size(), 3u);
+  // Toward flat: the first point is within 1/100 of the candidate's size, and sizes rise along the path.
+  EXPECT_GT(g.traced_toward_flat_to, 0.0);
+  EXPECT_LE(g.trace.path.front().norm(), g.traced_toward_flat_to * (1 + 1e-9));
+  EXPECT_LE(g.trace.path.front().cwiseAbs().maxCoeff(), 0.01);
+  for (std::size_t i = 1; i < g.trace.path.size(); ++i) EXPECT_GT(g.trace.path[i].norm(), g.trace.path[i - 1].norm()) << i;
+  // Every point keeps every letter (valley >= 0, mountain <= 0), and the last reaches 30 degrees.
+  for (std::size_t i = 0; i < g.trace.path.size(); ++i)
+    for (int e = 0; e < p.num_edges(); ++e) {
+      const int sign = assigned_fold_sign(p.assignments[e]);
+      if (sign != 0) EXPECT_GT(sign * g.trace.path[i][e], 0.0) << "point " << i << " crease " << e;
+    }
+  EXPECT_GE(g.trace.max_fold, rad(30));
 }
 
 // Seed 001 §3-4, twist alpha = pi/6. Type 2M folds rigidly with 1 DOF and its two paths cross
