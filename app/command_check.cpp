@@ -28,6 +28,7 @@ void print_text(const std::string& file, const FoldabilityReport& r) {
     std::cout << "  DOF " << r.dof << ", max closure residual along the branch " << r.max_residual << " rad";
     if (r.certificate_mismatch) std::cout << ", certificate mismatch " << *r.certificate_mismatch;
     std::cout << "\n";
+    if (r.strictness) std::cout << "  strict: " << strict_verdict(*r.strictness) << "\n";
   }
   if (r.obstruction) std::cout << "  obstruction: " << r.obstruction->message << "\n";
   if (r.model == FoldabilityModel::kGivenStateHoleClosure)

@@ -218,11 +218,7 @@ Json foldability_json(const FoldabilityReport& r) {
                                                     "no motion from flat folds all four creases there (proof)"},
                        {"meaning", r.strictness->strict ? "every M/V crease folds (strict)"
                                                         : "weak: the listed M/V creases stay flat"},
-                       // The strict question on its own: certified, disproved, or open.
-                       {"strict_verdict", r.strictness->strict ? "strictly foldable (certified: the certificate folds every M/V crease)"
-                                          : !r.strictness->strict_obstruction_vertices.empty()
-                                              ? "not strictly foldable (proof: straight lettered lines cross)"
-                                              : "undecided (a weak certificate only; no strict motion found, none ruled out)"}};
+                       {"strict_verdict", strict_verdict(*r.strictness)}};
   if (!r.certificate_samples.empty()) {
     // The certifying path, sampled, for replay by other tools (a multi-DOF path is not
     // exposed by `trace`).

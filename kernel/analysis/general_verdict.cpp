@@ -213,6 +213,12 @@ void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0
 
 }  // namespace
 
+const char* strict_verdict(const StrictnessReport& st) {
+  if (st.strict) return "strictly foldable (certified: the certificate folds every M/V crease)";
+  if (!st.strict_obstruction_vertices.empty()) return "not strictly foldable (proof: straight lettered lines cross)";
+  return "undecided (a weak certificate only; no strict motion found, none ruled out)";
+}
+
 StrictnessReport strictness_at(const CreasePattern& pattern, const Eigen::VectorXd& rho) {
   StrictnessReport st;
   const double cut = st.flat_fraction * rho.cwiseAbs().maxCoeff();

@@ -205,6 +205,10 @@ struct GeneralVerdict {
   double seconds = 0.0;
 };
 
+// The strict question on its own, in words: certified (strict), disproved (crossing lettered
+// lines), or undecided (a weak certificate only).
+const char* strict_verdict(const StrictnessReport& strictness);
+
 // The strictness of a folded state rho (per-edge fold angles, radians): the M/V creases of
 // the pattern (by letter, whether or not the verdict used the letters) that stay flat.
 StrictnessReport strictness_at(const CreasePattern& pattern, const Eigen::VectorXd& rho);
