@@ -256,7 +256,8 @@ def general_cases_section(fams):
                 "| n | creases | wall s | verdict, trace | DOF | strict | points | factorisations | max residual |",
                 "|---|---|---|---|---|---|---|---|---|"]
         for r in wb:
-            out.append(f"| {cells(r)} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | {r.get('label', '')} | "
+            label = r.get('label', '').replace('|', '\\|')  # a pipe would split the table cell
+            out.append(f"| {cells(r)} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | {label} | "
                        f"{r.get('dof', 0):.0f} | {'yes' if r.get('strict') else 'no'} | {r.get('points', 0):.0f} | "
                        f"{r.get('factorizations', 0):.0f} | {fmt(r.get('max_residual'))} |")
         if len(wb) >= 2:

@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -528,7 +528,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
         }
       } else if (method == TraceMethod::kFoldSize) {
         toward_flat = trace_by_fold_size(sys, cand.x, sign, opt, tr, accept);
-        trial.trace_method = "fold size (||rho||_2 stepped, toward flat and out)";
+        trial.trace_method = "fold size (the 2-norm of the fold angles stepped, toward flat and out)";
         trial.traced_toward_flat_to = toward_flat;
       } else {
         trace_by_driving_crease(sys, cand.x, sys.unknown_of_edge(cand.edge), opt, tr, accept);
