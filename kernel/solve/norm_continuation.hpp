@@ -13,10 +13,10 @@
 // just under the tolerance to near round-off (near flat, where sigma_min ~ the fold, a point
 // at 1e-12 residual can be 1e-10 rad off the manifold; the polish moves the size by about as
 // much, and the point's own ||x|| is the size from then on). A point is accepted when the
-// corrector converges (||r||_inf and the size miss both <= tolerance); h grows by 1.5 after an accepted
-// point (at most max_relative_step, and at most max_angle_step / ||x||_inf so that no crease
-// moves by more than that in the predictor) and is halved after a failure, down to
-// min_relative_step.
+// corrector converges (||r||_inf and the size miss both <= tolerance); h grows by 1.5 after
+// an accepted point (at most max_relative_step, and at most max_angle_step / ||x||_inf so
+// that no crease moves by more than that in the predictor) and is halved after a failure,
+// down to min_relative_step.
 //
 // Against holding one "driving" crease (the verdict's older multi-DOF trace), the size of
 // the whole fold never stalls: a motion that leaves the driving crease flat, or turns it
