@@ -319,7 +319,6 @@ bool first_order_loop_gain_report(const CreasePattern& p, const Topology& t, con
   return true;
 }
 
-// 3. The general loop-closure verdict, with the branch explorer where it applies.
 // Up to 6 states of path[0 .. count), evenly spread, the first and the last included.
 std::vector<Eigen::VectorXd> sample_path(const std::vector<Eigen::VectorXd>& path, int count) {
   count = std::min<int>(count, static_cast<int>(path.size()));
@@ -332,6 +331,7 @@ std::vector<Eigen::VectorXd> sample_path(const std::vector<Eigen::VectorXd>& pat
   return out;
 }
 
+// 3. The general loop-closure verdict, with the branch explorer where it applies.
 void general_report(const CreasePattern& p, const Topology& t, const FoldabilityOptions& o, FoldabilityReport& r) {
   GeneralVerdictOptions go;
   go.use_assignment = o.use_assignment;
@@ -715,9 +715,9 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
   // Letters ignored and no motion found: a motion that keeps the letters is one with them
   // ignored too, so the lettered check's yes, when it has one, is the answer here (a rounded
   // Miura-ori's witness is decided by the multiplier model only with its letters).
-  const bool lettered = std::any_of(pattern.assignments.begin(), pattern.assignments.end(),
-                                    [](Assignment a) { return assigned_fold_sign(a) != 0; });
-  if (!options.use_assignment && !r.foldable() && lettered) {
+  if (!options.use_assignment && !r.foldable() &&
+      std::any_of(pattern.assignments.begin(), pattern.assignments.end(),
+                  [](Assignment a) { return assigned_fold_sign(a) != 0; })) {
     FoldabilityOptions keep_letters = options;
     keep_letters.use_assignment = true;
     FoldabilityReport with = check_foldability(pattern, topology, keep_letters);
