@@ -40,7 +40,8 @@ void print_text(const std::string& file, const FoldabilityReport& r) {
     int keep = 0;
     for (const TracedBranch& b : r.branches) keep += r.assignment_used && b.signs_match_assignment;
     std::cout << "  branches: " << r.branches.size() << " traced through " << r.points.size() << " points; " << keep
-              << " keep every letter from their start\n";
+              << " keep every letter from their start"
+              << (r.exploration_budget_exhausted ? " (the explorer's work budget ran out: departures left untraced)" : "") << "\n";
     for (const BranchPoint& p : r.points)
       if (p.kind == PointKind::kBifurcation)
         std::cout << "  bifurcation where crease " << p.parameter_edge << " is at " << to_degrees(p.parameter)

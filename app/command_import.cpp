@@ -1,4 +1,4 @@
-// rigidfold import CP.svg|CP.opx --out CP.fold [--merge-tolerance REL] [--json]
+// rigidfold import CP.svg|CP.opx --out CP.fold [--merge-tolerance REL] [--snap-loose-ends DIST] [--json]
 // Reads an SVG crease pattern in Origami Simulator's colours (kernel/pattern/svg_reader.hpp)
 // or an ORIPA .opx (kernel/pattern/opx_reader.hpp, by extension) and writes it as FOLD;
 // prints what the import did (segments per letter, crossings split, points merged and the
@@ -40,7 +40,11 @@ nlohmann::ordered_json import_json(const std::string& in, const std::string& out
               {"touches", s.touches},
               {"duplicate_edges", s.duplicate_edges},
               {"collinear_vertices_removed", s.collinear_vertices_removed},
-              {"zero_length_segments", s.zero_length_segments}};
+              {"zero_length_segments", s.zero_length_segments},
+              {"loose_end_snap", s.loose_end_snap},
+              {"loose_ends_snapped", s.loose_ends_snapped},
+              {"loose_ends_onto_lines", s.loose_ends_onto_lines},
+              {"max_snap_distance", s.max_snap_distance}};
   Json edges = Json::object();
   for (Assignment a : p.assignments) {
     const std::string key(1, assignment_letter(a));
@@ -70,7 +74,8 @@ void print_text(const nlohmann::ordered_json& j) {
             << " points merged (tolerance " << s["merge_tolerance"].get<double>() << " = " << s["merge_tolerance_relative"].get<double>()
             << " x pattern size " << s["pattern_size"].get<double>() << "; largest move " << s["max_merge_distance"].get<double>()
             << "), " << s["duplicate_edges"] << " duplicate lines, " << s["collinear_vertices_removed"]
-            << " collinear vertices removed\n";
+            << " collinear vertices removed, " << s["loose_ends_snapped"] << " loose line ends joined (snap distance "
+            << s["loose_end_snap"].get<double>() << ")\n";
   for (const auto& w : j["warnings"]) std::cout << "  warning: " << w.get<std::string>() << "\n";
 }
 
@@ -81,6 +86,7 @@ void add_import_command(CLI::App& app) {
   struct Args {
     std::string in, out;
     double merge = SvgReadOptions{}.merge_tolerance;
+    double snap = SvgReadOptions{}.loose_end_snap;
     bool json = false;
   };
   auto a = std::make_shared<Args>();
@@ -88,6 +94,10 @@ void add_import_command(CLI::App& app) {
   cmd->add_option("--out", a->out, "FOLD file to write")->required();
   cmd->add_option("--merge-tolerance", a->merge, "points closer than this fraction of the pattern size are one vertex (default 1e-4)")
       ->check(CLI::Range(1e-12, 0.099));
+  cmd->add_option("--snap-loose-ends", a->snap,
+                  "SVG: a line stopping this close (user units) short of a vertex or line is joined to it "
+                  "(default 3, Origami Simulator's vertex tolerance, at most 1% of the pattern size; 0: removed as dangling)")
+      ->check(CLI::Range(0.0, 1e300));
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->callback([a] {
     // The output checked against the input before any work (kernel/pattern/output_set.hpp).
@@ -97,6 +107,7 @@ void add_import_command(CLI::App& app) {
     const SummaryToStderrIfStdoutIsAnOutput to_stderr(outputs);
     SvgReadOptions options;
     options.merge_tolerance = a->merge;
+    options.loose_end_snap = a->snap;
     SvgImportSummary summary;
     OpxImportSummary opx;
     const CreasePattern p = is_opx_path(a->in) ? read_opx(a->in, options, &opx) : read_svg(a->in, options, &summary);

@@ -160,7 +160,8 @@ Json foldability_json(const FoldabilityReport& r) {
   j["branches"] = branches;
   if (r.model == FoldabilityModel::kGeneralLoopClosure)
     j["branch_exploration"] = r.branches_explored ? Json({{"points", r.points.size()}, {"branches", r.branches.size()},
-                                                          {"seconds", r.exploration_seconds}})
+                                                          {"seconds", r.exploration_seconds},
+                                                          {"work_budget_exhausted", r.exploration_budget_exhausted}})
                                                   : Json(r.exploration_note);
   Json points = Json::array();
   for (std::size_t i = 0; i < r.points.size(); ++i) {

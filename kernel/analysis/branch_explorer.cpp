@@ -46,7 +46,7 @@ class Explorer {
     BranchPoint flat;
     flat.kind = PointKind::kFlat;
     add_point(flat, Eigen::VectorXd::Zero(sys_.num_unknowns()), [](const Eigen::VectorXd&) { return true; });
-    while (!queue_.empty() && static_cast<int>(out_.branches.size()) < opt_.max_branches) {
+    while (!queue_.empty() && static_cast<int>(out_.branches.size()) < opt_.max_branches && !out_.budget_exhausted) {
       const Departure dep = queue_.front();
       queue_.pop_front();
       if (is_used(dep.point, dep.direction)) continue;
@@ -71,6 +71,7 @@ class Explorer {
   // Adds a point with its tangent cone; enqueues the departures allowed(d) accepts.
   template <class Allowed>
   int add_point(BranchPoint bp, const Eigen::VectorXd& x, Allowed&& allowed) {
+    spend();
     const TangentCone cone = tangent_cone(sys_, topology_, x, cone_);
     bp.kernel_dimension = cone.kernel_dimension;
     bp.tangent_lines = static_cast<int>(cone.lines.size());
@@ -144,6 +145,7 @@ class Explorer {
       });
       before_prev_x = prev_x;
       prev_x = x;
+      if (spend()) return true;  // halt stays kNone: the branch ends with kMaxPoints
       if (br.path.size() > 2 && monitor.step(dense_jacobian(sys_, x), along).sign_changed) {
         halt = Halt::kBifurcation;
         return true;
@@ -188,6 +190,7 @@ class Explorer {
       case Halt::kNone:
         if (cr.stopped) {
           br.stopped_by = StopReason::kMaxPoints;
+          if (out_.budget_exhausted) br.stop_message = "the explorer's work budget ran out";
         } else {
           br.stopped_by = StopReason::kContinuationFailed;
           br.stop_message = cr.reason;
@@ -277,6 +280,15 @@ class Explorer {
   const CreasePattern& pattern_;
   const Topology& topology_;
   const BranchExplorerOptions& opt_;
+  // Counts one dense factorisation of J (BranchExplorerOptions::max_dense_work); true once the
+  // budget is spent.
+  bool spend() {
+    const double n = sys_.num_unknowns();
+    out_.dense_work += static_cast<double>(sys_.num_rows()) * n * n;
+    if (out_.dense_work > opt_.max_dense_work) out_.budget_exhausted = true;
+    return out_.budget_exhausted;
+  }
+
   const ClosureSystem& sys_;
   BranchExploration& out_;
   const Eigen::VectorXd reference_;

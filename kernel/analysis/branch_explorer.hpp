@@ -57,6 +57,14 @@ struct BranchExplorerOptions {
   double same_direction = 0.995;      // cosine above this: the same departure direction
   int max_branches = 64;
   int max_points_per_branch = 3000;
+  // Work budget: each traced point and each branch point's tangent cone costs a dense
+  // factorisation of the closure Jacobian, counted as rows x unknowns^2; the exploration stops
+  // (branches end with kMaxPoints, BranchExploration::budget_exhausted) when the sum passes
+  // this. Deterministic, unlike a time limit. The bundled and corpus patterns the explorer
+  // finishes on spend <= 4e6 (square twist Type 2M: 1206 points); Origami Simulator's
+  // triangulated hypar (280 creases, 2e7 a point) would trace 1000+ points in 37 s, and stops
+  // after 8 (1.5 s with its flat tangent cone; 2-core VM).
+  double max_dense_work = 1.5e8;
   int max_unknowns = 400;             // larger patterns: not applicable (dense SVDs)
   bool check_global_interference = true;  // faces placed and tested (facet_interference.hpp) at every point
   // Corrector stop 5e-13 (inf-norm) so that every vertex's |log R_v| (a 2-norm, up to sqrt(3)
@@ -93,6 +101,8 @@ struct BranchExploration {
   std::vector<BranchPoint> points;    // points[0] is the flat state
   std::vector<TracedBranch> branches;  // from_point / to_point index `points`
   double seconds = 0.0;
+  bool budget_exhausted = false;      // stopped by max_dense_work (departures left untraced)
+  double dense_work = 0.0;            // spent, in max_dense_work's units
 };
 
 // Inputs: a validated flat pattern and its topology.

@@ -381,6 +381,7 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   }
   r.branches_explored = x.applicable;
   r.exploration_seconds = x.seconds;
+  r.exploration_budget_exhausted = x.budget_exhausted;
   if (!x.applicable) {
     r.exploration_note = x.why_not;
     r.unrefined_singular_points = g.singular_points;

@@ -112,6 +112,7 @@ struct FoldabilityReport {
   bool branches_explored = false;   // the branch explorer ran
   std::string exploration_note;     // why it did not, when it did not
   double exploration_seconds = 0.0;
+  bool exploration_budget_exhausted = false;  // BranchExplorerOptions::max_dense_work ran out
   std::vector<SignSwitch> sign_switches;  // general model: along the search's certificate trace
   // General model, foldable by the search's certificate: strict (every M/V crease folds) or
   // weak (the listed lettered creases stay flat). Empty on other models and verdicts.

@@ -20,6 +20,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/input_limits.hpp"
 #include "kernel/pattern/json_input.hpp"
+#include "kernel/pattern/loose_end_snap.hpp"
 #include "kernel/pattern/planar_arrangement.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
@@ -884,6 +885,24 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
   } catch (const std::invalid_argument& e) {
     throw InputError(source, e.what());
   }
+  // Lines stopping short of their vertex joined to it (loose_end_snap.hpp), then rebuilt.
+  if (!(options.loose_end_snap >= 0) || !std::isfinite(options.loose_end_snap))
+    throw InputError(source, "loose-end snap distance " + fmt(options.loose_end_snap) + " must be finite and >= 0");
+  summary.loose_end_snap = std::min(options.loose_end_snap, 1e-2 * summary.pattern_size);
+  const LooseEndSnap snapped =
+      snap_loose_ends(parser.segments, arr, summary.loose_end_snap, summary.merge_tolerance, kMaxSvgCandidatePairs);
+  if (snapped.ends_snapped > 0) {
+    summary.loose_ends_snapped = snapped.ends_snapped;
+    summary.loose_ends_onto_lines = snapped.onto_lines;
+    summary.max_snap_distance = snapped.max_distance;
+    try {
+      arr = build_planar_arrangement(parser.segments, ao);
+    } catch (const std::length_error& e) {
+      throw InputError(source, std::string(e.what()) + " (input_limits.hpp)");
+    } catch (const std::invalid_argument& e) {
+      throw InputError(source, e.what());
+    }
+  }
   auto point = [](const Eigen::Vector2d& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; };
   if (!arr.conflicts.empty()) {
     const auto& c = arr.conflicts.front();
@@ -979,6 +998,16 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
     p.warnings.push_back(source + ": " + std::to_string(arr.merged_points) + " near-coincident points merged into vertices (tolerance " +
                          fmt(summary.merge_tolerance) + " = " + fmt(options.merge_tolerance) + " x pattern size " + fmt(summary.pattern_size) +
                          "; largest move " + fmt(arr.max_merge_distance) + ")");
+  if (snapped.ends_snapped > 0)
+    p.warnings.push_back(source + ": " + std::to_string(snapped.ends_snapped) + " loose line ends joined to the " +
+                         (snapped.onto_lines == snapped.ends_snapped ? std::string("line")
+                          : snapped.onto_lines > 0                   ? std::string("vertex or line")
+                                                                     : std::string("vertex")) +
+                         " they stop short of (largest move " + fmt(snapped.max_distance) + ", snap distance " +
+                         fmt(summary.loose_end_snap) + " = Origami Simulator's vertex tolerance; e.g. " +
+                         parser.element_names[snapped.source_example] + ")");
+  if (snapped.skipped_too_many)
+    p.warnings.push_back(source + ": too many loose line ends to join them to their vertices (input_limits.hpp); they are removed as dangling");
   if (summary.dangling_edges_removed > 0) {
     std::string names;
     for (const auto& n : dangling_names) names += (names.empty() ? "" : ", ") + n;

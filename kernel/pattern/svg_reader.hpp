@@ -33,7 +33,9 @@
 // box) become one vertex, a line drawn twice becomes one edge (drawn twice in two colours is
 // bad input naming both elements), a vertex joining two collinear edges of one colour is
 // removed, and dangling pieces (an end on no other line: overshoots, a crease stopping inside
-// the paper) are removed with a warning, since they divide no face and cannot fold. Faces
+// the paper) are removed with a warning, since they divide no face and cannot fold; before
+// that, a line stopping short of a vertex by at most SvgReadOptions::loose_end_snap is joined
+// to it, with a warning (loose_end_snap.hpp). Faces
 // are derived from the plane embedding (validate_pattern.hpp); where the black lines close
 // into loops, faces outside them (closed by lines drawn past the boundary) are removed too.
 //
@@ -57,6 +59,11 @@ struct SvgReadOptions {
   // mountain drawn over a valley), while their shortest creases are > 10 px (> 3e-3 of
   // their size). 1e-4 imports them all.
   double merge_tolerance = 1e-4;
+  // A line end on no other line, whose dangling piece is longer than this, moves to the
+  // nearest vertex (else line) within this distance (loose_end_snap.hpp), in SVG user units:
+  // Origami Simulator's vertex tolerance (vertTol = 3), at most 1e-2 of the pattern size.
+  // 0: no snapping (such pieces are removed as dangling).
+  double loose_end_snap = 3.0;
 };
 
 struct SvgImportSummary {
@@ -75,6 +82,10 @@ struct SvgImportSummary {
   int duplicate_edges = 0;
   int collinear_vertices_removed = 0;
   int zero_length_segments = 0;
+  double loose_end_snap = 0;       // the snap distance used, user units
+  int loose_ends_snapped = 0;      // line ends moved onto a vertex or line (loose_end_snap.hpp)
+  int loose_ends_onto_lines = 0;   // of which onto a line
+  double max_snap_distance = 0;    // largest such move, user units
   int dangling_edges_removed = 0;  // pieces with an end on no other line (see above)
   int faces_outside_boundary_removed = 0;  // closed by lines drawn past the black boundary
   double shortest_edge = 0;        // after the import, user units (warned when < 10 x merge_tolerance)

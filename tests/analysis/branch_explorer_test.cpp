@@ -95,6 +95,30 @@ TEST(BranchExplorerSeed001, Type2MBifurcationLocatedAndBothBranchesLeft) {
   EXPECT_EQ(certified, 2);
 }
 
+TEST(BranchExplorerBudget, SpentWorkIsCountedAndAnExhaustedBudgetStopsTheExploration) {
+  const CreasePattern p = modified(kPi / 6, generators::SquareTwistModifiedType::Type2M);
+  const Topology t = build_topology(p);
+  const BranchExploration full = explore_branches(p, t);
+  ASSERT_TRUE(full.applicable);
+  EXPECT_FALSE(full.budget_exhausted);
+  EXPECT_GT(full.dense_work, 0.0);
+  EXPECT_LE(full.dense_work, BranchExplorerOptions{}.max_dense_work);
+  // A budget of a tenth of what the full exploration spent: it stops early, says so, and the
+  // branch it was tracing ends as out of points.
+  BranchExplorerOptions o;
+  o.max_dense_work = 0.1 * full.dense_work;
+  const BranchExploration cut = explore_branches(p, t, o);
+  ASSERT_TRUE(cut.applicable);
+  EXPECT_TRUE(cut.budget_exhausted);
+  EXPECT_LT(cut.branches.size(), full.branches.size());
+  ASSERT_FALSE(cut.branches.empty());
+  EXPECT_EQ(cut.branches.back().stopped_by, StopReason::kMaxPoints);
+  std::size_t points = 0, points_full = 0;
+  for (const auto& b : cut.branches) points += b.path.size();
+  for (const auto& b : full.branches) points_full += b.path.size();
+  EXPECT_LT(points, points_full / 5);
+}
+
 TEST(BranchExplorerSeed001, Type1MPathsEachBreakOneLetterPair) {
   const CreasePattern p = modified(kPi / 6, generators::SquareTwistModifiedType::Type1M);
   const BranchExploration x = explore_branches(p, build_topology(p));

@@ -47,13 +47,13 @@ struct SvgCorpusFile {
 const SvgCorpusFile kSvgFiles[] = {
     {"origami-simulator/MoosersTrainRigid-Gardner.svg", 467, 950, 484, 340, 1, 127, 397, 426, 0, 0},
     {"origami-simulator/huffmanWaterbomb.svg", 448, 1165, 718, 360, 1, 88, 758, 319, 0, 0},
-    {"origami-simulator/hypar.svg", 97, 283, 187, 93, 1, 4, 96, 88, 0, 95},
+    {"origami-simulator/hypar.svg", 97, 284, 188, 93, 1, 4, 96, 88, 0, 96},  // one loose end joined
     {"origami-simulator/miura-ori.svg", 182, 337, 156, 132, 1, 50, 137, 150, 0, 0},
     {"origami-simulator/miura_sharpangle.svg", 325, 612, 288, 253, 1, 72, 282, 258, 0, 0},
     {"origami-simulator/reschTriTessellation.svg", 243, 664, 422, 183, 1, 60, 451, 153, 0, 0},
     {"origami-simulator/singlesquaretwist.svg", 16, 24, 9, 4, 1, 12, 4, 8, 0, 0},
     {"origami-simulator/squaretwistManyAngles.svg", 144, 216, 81, 36, 9, 108, 36, 72, 0, 0},
-    {"origami-simulator/traditionalCrane.svg", 69, 142, 74, 55, 1, 14, 68, 50, 10, 0},
+    {"origami-simulator/traditionalCrane.svg", 69, 144, 76, 55, 1, 14, 70, 50, 10, 0},  // two loose ends joined
     {"origami-simulator/waterbombBase.svg", 9, 16, 8, 1, 1, 8, 4, 4, 0, 0},
 };
 
@@ -257,14 +257,76 @@ TEST(SvgReader, NearCoincidentEndsMergeWithinTheToleranceOnly) {
   bool reported = false;
   for (const auto& w : p.warnings) reported = reported || w.find("merged") != std::string::npos;
   EXPECT_TRUE(reported);
-  // With a tolerance below the gap the crease dangles: it is removed and no face splits.
+  // With a tolerance below the gap the crease stops short of the side: the loose end is
+  // joined to the side (loose_end_snap.hpp) ...
   SvgReadOptions tight;
   tight.merge_tolerance = 1e-6;
+  SvgImportSummary s3;
+  const CreasePattern joined = parse_svg(svg(body), "gap.svg", tight, &s3);
+  EXPECT_EQ(joined.num_faces(), 2);
+  EXPECT_EQ(s3.loose_ends_snapped, 1);
+  EXPECT_EQ(s3.loose_ends_onto_lines, 1);
+  // ... and without that, it dangles: it is removed and no face splits.
+  tight.loose_end_snap = 0;
   SvgImportSummary s2;
   const CreasePattern q = parse_svg(svg(body), "gap.svg", tight, &s2);
   EXPECT_EQ(q.num_faces(), 1);
   EXPECT_EQ(letters(q)['M'], 0);
   EXPECT_EQ(s2.dangling_edges_removed, 1);
+  EXPECT_EQ(s2.loose_ends_snapped, 0);
+}
+
+TEST(SvgReader, LinesStoppingShortOfAVertexOrLineAreJoinedToIt) {
+  // A 400 x 400 square (size 566: snap distance 3, Origami Simulator's vertTol); mountains
+  // across it and along a diagonal cross at (200, 200). Two valleys come down from the top
+  // side and stop 2.5 short: one of that crossing (a vertex), one of the horizontal mountain
+  // at (300, 200) (a line), as Origami Simulator's hypar.svg draws one of its creases.
+  const std::string body =
+      "<polygon points=\"0,0 400,0 400,400 0,400\" stroke=\"black\" fill=\"none\"/>"
+      "<line x1=\"0\" y1=\"200\" x2=\"400\" y2=\"200\" stroke=\"red\"/>"
+      "<line x1=\"0\" y1=\"0\" x2=\"400\" y2=\"400\" stroke=\"red\"/>"
+      "<line x1=\"200\" y1=\"0\" x2=\"200\" y2=\"197.5\" stroke=\"blue\"/>"
+      "<line x1=\"300\" y1=\"0\" x2=\"300\" y2=\"197.5\" stroke=\"blue\"/>";
+  SvgImportSummary s;
+  const CreasePattern p = parse_svg(svg(body), "short.svg", {}, &s);
+  EXPECT_DOUBLE_EQ(s.loose_end_snap, 3.0);
+  EXPECT_EQ(s.loose_ends_snapped, 2);
+  EXPECT_EQ(s.loose_ends_onto_lines, 1);
+  EXPECT_DOUBLE_EQ(s.max_snap_distance, 2.5);
+  EXPECT_EQ(s.dangling_edges_removed, 0);
+  EXPECT_EQ(p.num_faces(), 6);  // 4 quarters of the mountains, each valley splitting one
+  EXPECT_EQ(letters(p)['V'], 2);
+  EXPECT_EQ(letters(p)['M'], 5);  // the horizontal split at the crossing and at (300, 200)
+  int centre_degree = 0;  // the valley ends exactly at the crossing
+  for (const auto& e : p.edges)
+    for (int v : e)
+      centre_degree += std::abs(p.vertices[v].x() - 200) < 1e-12 && std::abs(p.vertices[v].y() + 200) < 1e-12;
+  EXPECT_EQ(centre_degree, 5);
+  bool warned = false;
+  for (const auto& w : p.warnings) warned = warned || w.find("2 loose line ends joined") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // Not joined: both valleys dangle and are removed.
+  SvgReadOptions no_snap;
+  no_snap.loose_end_snap = 0;
+  SvgImportSummary s0;
+  const CreasePattern q = parse_svg(svg(body), "short.svg", no_snap, &s0);
+  EXPECT_EQ(s0.loose_ends_snapped, 0);
+  EXPECT_EQ(s0.dangling_edges_removed, 2);
+  EXPECT_EQ(q.num_faces(), 4);
+  EXPECT_EQ(letters(q)['V'], 0);
+  // The snap distance is at most 1e-2 of the pattern: the same drawing scaled down 10x
+  // (size 56.6, snap 0.566) leaves the 0.25 gaps joined and a 1 gap alone.
+  const std::string scaled = "<g transform=\"scale(0.1)\">" + body + "</g>";
+  SvgImportSummary s10;
+  (void)parse_svg(svg(scaled), "short.svg", {}, &s10);
+  EXPECT_NEAR(s10.loose_end_snap, 0.01 * s10.pattern_size, 1e-12);
+  EXPECT_EQ(s10.loose_ends_snapped, 2);
+  SvgReadOptions narrow;
+  narrow.loose_end_snap = 1.5;  // below the 2.5 gaps (and the 1.77 from (200, 197.5) to the diagonal)
+  SvgImportSummary s2;
+  (void)parse_svg(svg(body), "short.svg", narrow, &s2);
+  EXPECT_EQ(s2.loose_ends_snapped, 0);
+  EXPECT_EQ(s2.dangling_edges_removed, 2);
 }
 
 TEST(SvgReader, TransformsComposeThroughNestedGroups) {
