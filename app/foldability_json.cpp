@@ -243,6 +243,11 @@ Json foldability_json(const FoldabilityReport& r) {
     j["search_evidence"] = {{"sign_respecting_least_squares", ev},
                             {"growth_exponent", r.residual_growth_exponent},
                             {"evidence_floor_rad", r.tolerances.evidence_floor}};
+    if (r.scaled_norm_starts > 0)
+      j["search_evidence"]["at_the_patterns_scale"] = {{"norm_rad", r.scaled_norm_amplitude},
+                                                       {"starts", r.scaled_norm_starts},
+                                                       {"least_residual_rad", r.scaled_norm_residual},
+                                                       {"is_evidence", false}};
   }
   j["max_residual"] = r.max_residual;
   j["interference"] = r.interference_checked;

@@ -251,6 +251,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
   struct Candidate {
     Eigen::VectorXd x;
     int edge;
+    bool far_from_flat = false;  // found at the pattern's scale: certified only by a path back toward flat
   };
   std::vector<Candidate> candidates;
   SplitMix64 rng{opt.seed};
@@ -398,6 +399,37 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       best_x.push_back(best);
       if (!candidates.empty()) break;
     }
+    // The norm search once more at the pattern's own scale (header, step 5): a candidate if it
+    // closes with its letters kept; never evidence.
+    const double scaled = opt.scaled_norm_rms * std::sqrt(static_cast<double>(n));
+    const double largest = opt.evidence_amplitudes.empty() ? 0.0 : opt.evidence_amplitudes.front();
+    const bool run_scaled = scaled > largest && n <= opt.scaled_norm_max_unknowns;
+    for (int s = 0; s < opt.scaled_norm_search_starts && candidates.empty() && run_scaled; ++s) {
+      report_progress(opt.progress, [&] {
+        return "norm-constrained least squares at the pattern's scale, ||rho||_2 = " + progress_degrees(scaled) +
+               " deg, start " + std::to_string(s + 1) + " of " + std::to_string(opt.scaled_norm_search_starts);
+      });
+      Eigen::VectorXd x0 = signed_start(sys, sign, opt, erng);
+      x0 *= scaled / x0.norm();
+      AmplitudeSearchOptions ao;
+      ao.amplitude = scaled;
+      ao.tolerance = opt.tolerances.residual;
+      ao.max_iterations = opt.scaled_norm_search_iterations;
+      ao.logarithmic = true;
+      const AmplitudeSearchResult ar = amplitude_search(sys, x0, lower, upper, ao);
+      ++out.starts_tried;
+      ++out.scaled_norm_starts;
+      out.scaled_norm_residual = out.scaled_norm_residual < 0 ? ar.closure_residual
+                                                              : std::min(out.scaled_norm_residual, ar.closure_residual);
+      if (ar.converged &&
+          first_crease_against_letter(sign, sys.edges_from_unknowns(ar.x), opt.tolerances.sign_threshold) < 0) {
+        ++out.starts_converged;
+        Eigen::Index k = 0;
+        ar.x.cwiseAbs().maxCoeff(&k);
+        candidates.push_back({ar.x, sys.edge_of_unknown(static_cast<int>(k)), true});
+      }
+    }
+    out.scaled_norm_amplitude = run_scaled ? scaled : 0.0;
     // Does the rounding of the coordinates explain the least residual (header, step 5)?
     if (candidates.empty()) {
       for (std::size_t a = 0; a < out.evidence.size(); ++a) {
@@ -475,7 +507,7 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       if (static_cast<int>(c) < opt.max_candidates_traced) {
         if (std::optional<Eigen::VectorXd> strict = push_off_flat_creases(sys, candidates[c].x, sign, opt.tolerances.residual,
                                                                                     StrictnessReport{}.flat_fraction))
-          pushed.push_back({*strict, candidates[c].edge});
+          pushed.push_back({*strict, candidates[c].edge, candidates[c].far_from_flat});
       }
       pushed.push_back(candidates[c]);
     }
@@ -500,9 +532,12 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
     ro.relative_tolerance = opt.tolerances.rank_cut;
     const RankResult rk = jacobian_rank(J, ro);
     // DOF 1: the curve. DOF > 1: the fold's size first, then the older driving crease.
+    // A candidate found at the pattern's scale, farther from flat: by the fold's size only
+    // (the path must reach back toward flat).
     const std::vector<TraceMethod> methods =
-        rk.dof == 1 ? std::vector<TraceMethod>{TraceMethod::kOneDof}
-                    : std::vector<TraceMethod>{TraceMethod::kFoldSize, TraceMethod::kDrivingCrease};
+        cand.far_from_flat ? std::vector<TraceMethod>{TraceMethod::kFoldSize}
+        : rk.dof == 1      ? std::vector<TraceMethod>{TraceMethod::kOneDof}
+                           : std::vector<TraceMethod>{TraceMethod::kFoldSize, TraceMethod::kDrivingCrease};
     for (TraceMethod method : methods) {
       GeneralVerdict trial = out;
       trial.trace.driving_edge = cand.edge;

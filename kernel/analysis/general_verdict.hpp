@@ -119,6 +119,18 @@ struct GeneralVerdictOptions {
   // driving creases flat.
   int norm_search_starts = 2;
   int norm_search_iterations = 80;
+  // ... and, when no amplitude gave a candidate, the norm search once more at the pattern's
+  // own scale, ||x||_2 = scaled_norm_rms x sqrt(unknowns) (only where that exceeds the largest
+  // amplitude), from this many starts, its lettered creases stepped in log|rho|
+  // (AmplitudeSearchOptions::logarithmic); it adds candidates, never evidence. Near flat a
+  // large pattern's motion is ill-conditioned (its Jacobian's second-smallest singular value
+  // shrinks with the fold), so searches at 0.1 rad spread over hundreds of creases stall.
+  // Run up to scaled_norm_max_unknowns unknowns (each start is up to 200 sparse LM steps:
+  // ~0.6 s a start on 4,000 creases, 2-core VM).
+  double scaled_norm_rms = 0.025;
+  int scaled_norm_search_starts = 4;
+  int scaled_norm_search_iterations = 200;
+  int scaled_norm_max_unknowns = 1000;
   // ... and the best point of an amplitude, when its closure residual is at most this
   // (radians), is polished by Newton projection without bounds (header, step 5).
   double polish_residual = 1e-6;
@@ -199,6 +211,9 @@ struct GeneralVerdict {
   // Evidence search (step 5; empty when a candidate came from the first search).
   std::vector<AmplitudeEvidence> evidence;
   double growth_exponent = 0.0;        // of the least residual between the two largest amplitudes
+  double scaled_norm_amplitude = 0.0;  // ||x||_2 of the search at the pattern's scale (0: not run)
+  int scaled_norm_starts = 0;          // its starts
+  double scaled_norm_residual = -1.0;  // its least ||r||_inf (radians; -1: not run)
   // Obstruction (kNotRigidlyFoldable, or kUndecided from the evidence search).
   double least_residual = -1.0;        // least ||r||_inf by Gauss-Newton with the driving crease held
   std::vector<std::pair<int, double>> worst_vertices;  // (pattern vertex, ||r_v||_2), largest first, at most 5

@@ -57,17 +57,22 @@ AmplitudeSearchResult amplitude_search(const ClosureSystem& sys, const Eigen::Ve
 
   while (out.iterations < opt.max_iterations && !done(p) && mu <= 1e8) {
     const Eigen::VectorXd grad = p.J.transpose() * p.r + p.g * p.a;
-    // Held: at a bound with the descent direction pointing out of the box.
-    Eigen::VectorXd free_mask(n);
+    // Projected: held unknowns (at a bound, the descent pointing out of the box) get no step.
+    // Logarithmic: an unknown strictly on the far side of a bound at 0 (a lettered crease) is
+    // stepped in y = log|x| (column scaled by x, update x exp(dy)); the others additively.
+    Eigen::VectorXd free_mask(n), scale(n);
+    std::vector<char> in_log(n, 0);
     for (int i = 0; i < n; ++i) {
       const bool held = (p.x[i] <= lower[i] && grad[i] > 0) || (p.x[i] >= upper[i] && grad[i] < 0);
-      free_mask[i] = held ? 0.0 : 1.0;
+      in_log[i] = opt.logarithmic && ((lower[i] == 0.0 && p.x[i] > 0.0) || (upper[i] == 0.0 && p.x[i] < 0.0));
+      free_mask[i] = held && !in_log[i] ? 0.0 : 1.0;
+      scale[i] = in_log[i] ? p.x[i] : free_mask[i];
     }
     if (free_mask.sum() == 0) break;
-    const Eigen::SparseMatrix<double> Jf = p.J * free_mask.asDiagonal();  // held columns scaled to 0, pattern kept
+    const Eigen::SparseMatrix<double> Jf = p.J * scale.asDiagonal();  // held columns scaled to 0, pattern kept
     const Eigen::SparseMatrix<double> JtJ = Jf.transpose() * Jf;
-    const Eigen::VectorXd b = -(grad.cwiseProduct(free_mask));
-    const Eigen::VectorXd gf = p.g.cwiseProduct(free_mask);
+    const Eigen::VectorXd b = -(grad.cwiseProduct(scale));
+    const Eigen::VectorXd gf = p.g.cwiseProduct(scale);
     bool accepted = false;
     while (mu <= 1e8) {
       // Free unknowns get the damping mu, held ones a unit diagonal (their step is 0: b and gf are 0 there).
@@ -92,7 +97,10 @@ AmplitudeSearchResult amplitude_search(const ClosureSystem& sys, const Eigen::Ve
         mu *= 4;
         continue;
       }
-      Point q = evaluate(sys, (p.x + d).cwiseMax(lower).cwiseMin(upper), opt.amplitude);
+      Eigen::VectorXd next = p.x + d.cwiseProduct(scale);
+      for (int i = 0; i < n; ++i)
+        if (in_log[i]) next[i] = p.x[i] * std::exp(std::clamp(d[i], -30.0, 2.0));
+      Point q = evaluate(sys, next.cwiseMax(lower).cwiseMin(upper), opt.amplitude);
       if (q.objective < p.objective) {
         p = std::move(q);
         mu = std::max(mu / 3, 1e-15);

@@ -32,6 +32,13 @@ struct AmplitudeSearchOptions {
   // accepted steps (a plateau of an inconsistent system). 0: off.
   int stall_window = 8;
   double stall_factor = 0.99;
+  // false: projected steps (an unknown at a bound is held there while the descent points out
+  // of the box). true: an unknown whose bound on one side is 0 and which lies strictly beyond
+  // it (a lettered crease folded its letter's way) is stepped in log|x|, so it approaches 0
+  // but never sticks there; such starts must not be 0. Finds strict folds where projected
+  // steps leave creases stuck flat (Origami Simulator's triangulated hypar at ||x||_2 = 0.42:
+  // projected 7e-5 rad with ~12 creases flat; logarithmic closes it).
+  bool logarithmic = false;
 };
 
 struct AmplitudeSearchResult {

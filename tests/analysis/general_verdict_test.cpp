@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <numbers>
 #include <random>
@@ -22,6 +23,7 @@
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
+#include "kernel/pattern/svg_reader.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
 #include "tests/closure/closure_test_utils.hpp"
 
@@ -159,9 +161,52 @@ TEST(GeneralVerdictWaterbomb, TessellationIsStrictlyFoldableByTheFoldSizeTrace) 
   for (std::size_t i = 0; i < g.trace.path.size(); ++i)
     for (int e = 0; e < p.num_edges(); ++e) {
       const int sign = assigned_fold_sign(p.assignments[e]);
-      if (sign != 0) EXPECT_GT(sign * g.trace.path[i][e], 0.0) << "point " << i << " crease " << e;
+      if (sign != 0) {
+        EXPECT_GT(sign * g.trace.path[i][e], 0.0) << "point " << i << " crease " << e;
+      }
     }
   EXPECT_GE(g.trace.max_fold, rad(30));
+}
+
+// Origami Simulator's triangulated hypar (hypar.svg, 280 creases, 1 DOF; one magenta crease
+// joined to the corner it stops 2.95 px short of). Its strict motion is a near-straight ray
+// from flat, but near flat its Jacobian's second-smallest singular value shrinks with the fold:
+// the searches at 0.1, 0.01 and 0.001 rad stall at 1.6e-6, 7e-8 and 2.7e-9 rad. The norm
+// search at the pattern's own scale (0.025 x sqrt(280) = 0.42 rad), its lettered creases
+// stepped in log|rho|, closes it; the fold-size trace then certifies it back to 1/100 of that
+// and out to the fold limit. Found independently first: scipy's bounded least squares (trust
+// region reflective) at ||rho||_2 = 0.4 closes to 2e-15 with every letter kept, and a
+// pseudo-arclength walk from there reaches ||rho||_2 = 0.01 keeping them (session 18).
+TEST(GeneralVerdictCorpus, TriangulatedHyparIsStrictlyFoldableFoundAtThePatternsScale) {
+  const std::string path = std::string(RIGIDFOLD_CORPUS_DIR) + "/origami-simulator/hypar.svg";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not checked out beside the project";
+  const CreasePattern p = read_svg(path);
+  const Topology t = build_topology(p);
+  const GeneralVerdict g = general_verdict(p, t);
+  print("hypar.svg", g);
+  ASSERT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
+  EXPECT_TRUE(g.is_proof);
+  EXPECT_EQ(g.trace.dof_at_departure, 1);
+  EXPECT_GT(g.scaled_norm_amplitude, 0.4);
+  EXPECT_NE(g.trace_method.find("fold size"), std::string::npos) << g.trace_method;
+  EXPECT_TRUE(g.strictness.strict);
+  EXPECT_LE(g.trace.max_residual, 1e-12);
+  ASSERT_FALSE(g.trace.path.empty());
+  EXPECT_LE(g.traced_toward_flat_to, g.scaled_norm_amplitude / 100 * (1 + 1e-6));
+  EXPECT_LE(g.trace.path.front().norm(), g.traced_toward_flat_to * (1 + 1e-9));
+  EXPECT_GE(g.trace.max_fold, rad(30));
+  for (std::size_t i = 0; i < g.trace.path.size(); ++i)
+    for (int e = 0; e < p.num_edges(); ++e) {
+      const int sign = assigned_fold_sign(p.assignments[e]);
+      if (sign != 0 && i < static_cast<std::size_t>(g.trace.valid_points)) {
+        EXPECT_GT(sign * g.trace.path[i][e], 0.0) << "point " << i << " crease " << e;
+      }
+    }
+  // Without the search at the pattern's scale nothing is found: undecided, as before.
+  GeneralVerdictOptions o;
+  o.scaled_norm_search_starts = 0;
+  const GeneralVerdict without = general_verdict(p, t, o);
+  EXPECT_EQ(without.verdict, Verdict::kUndecided) << without.reason;
 }
 
 // Seed 001 §3-4, twist alpha = pi/6. Type 2M folds rigidly with 1 DOF and its two paths cross

@@ -171,6 +171,43 @@ TEST(AmplitudeSearch, FindsTheMiuraStateOfTheGivenNorm) {
   }
 }
 
+// Logarithmic steps (lettered creases stepped in log|x|) reach the same closed-form state,
+// every lettered crease strictly on its letter's side at every accepted point's end.
+TEST(AmplitudeSearch, LogarithmicStepsFindTheSameMiuraStateKeepingEveryLetterStrictly) {
+  const generators::MiuraParams m = miura_3x3();
+  const CreasePattern p = generators::miura_ori(m);
+  const Topology t = build_topology(p);
+  const ClosureSystem sys(p, t);
+  const int n = sys.num_unknowns();
+  Eigen::VectorXd lower(n), upper(n), x0(n);
+  std::vector<int> sign(n);
+  SplitMix64 rng{5};
+  for (int i = 0; i < n; ++i) {
+    sign[i] = assigned_fold_sign(p.assignments[sys.edge_of_unknown(i)]);
+    lower[i] = sign[i] > 0 ? 0.0 : -M_PI;
+    upper[i] = sign[i] < 0 ? 0.0 : M_PI;
+    x0[i] = sign[i] * (0.05 + rng.uniform());
+  }
+  for (double eps : {0.3, 0.01}) {
+    AmplitudeSearchOptions o;
+    o.amplitude = eps;
+    o.tolerance = 1e-14;
+    o.logarithmic = true;
+    const AmplitudeSearchResult r = amplitude_search(sys, x0 * (eps / x0.norm()), lower, upper, o);
+    ASSERT_TRUE(r.converged) << "eps " << eps << ": residual " << r.closure_residual << ", norm " << r.amplitude;
+    EXPECT_NEAR(r.amplitude, eps, 1e-14);
+    for (int i = 0; i < n; ++i)
+      if (sign[i] != 0) {
+        EXPECT_GT(sign[i] * r.x[i], 0.0) << i;
+      }
+    auto norm_at = [&](double fold) { return sys.unknowns_from_edges(testing::miura_edge_angles(p, m, fold)).norm(); };
+    double lo = 0.0, hi = 3.0;
+    for (int it = 0; it < 200; ++it) (norm_at(0.5 * (lo + hi)) < eps ? lo : hi) = 0.5 * (lo + hi);
+    const Eigen::VectorXd expected = sys.unknowns_from_edges(testing::miura_edge_angles(p, m, 0.5 * (lo + hi)));
+    EXPECT_LE((r.x - expected).cwiseAbs().maxCoeff(), 1e-9 * eps) << "eps " << eps;
+  }
+}
+
 TEST(AmplitudeSearch, RejectsBadArguments) {
   const CreasePattern p = generators::miura_ori(miura_3x3());
   const Topology t = build_topology(p);
