@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/number_flags.hpp"
 #include "app/provenance.hpp"
 #include "app/summary_stream.hpp"
 #include "kernel/pattern/fold_io.hpp"
@@ -97,7 +98,7 @@ void add_import_command(CLI::App& app) {
   cmd->add_option("--snap-loose-ends", a->snap,
                   "SVG: a line stopping this close (user units) short of a vertex or line is joined to it "
                   "(default 3, Origami Simulator's vertex tolerance, at most 1% of the pattern size; 0: removed as dangling)")
-      ->check(CLI::Range(0.0, 1e300));
+      ->check(finite_in(0.0, 1e9, "user units"));
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->callback([a] {
     // The output checked against the input before any work (kernel/pattern/output_set.hpp).
