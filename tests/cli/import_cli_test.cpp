@@ -57,6 +57,32 @@ TEST_F(ImportCli, WritesAFoldThatReadsBackWithThePrintedCounts) {
   EXPECT_DOUBLE_EQ(nlohmann::json::parse(r2.out)["svg"]["merge_tolerance_relative"].get<double>(), 1e-6);
 }
 
+// Origami Simulator's hypar.svg draws one magenta crease 2.95 px short of its corner: joined
+// by default (3 px, Origami Simulator's vertex tolerance), removed as dangling with 0.
+TEST_F(ImportCli, LooseLineEndsAreJoinedAndReported) {
+  if (!std::filesystem::exists(corpus("origami-simulator/hypar.svg"))) GTEST_SKIP() << "no corpus";
+  const std::string out = file("hypar.fold");
+  const std::string base = test::cli() + " import " + corpus("origami-simulator/hypar.svg") + " --out " + out + " --json";
+  const auto r = test::run_command(base);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["svg"]["loose_ends_snapped"], 1);
+  EXPECT_DOUBLE_EQ(j["svg"]["loose_end_snap"].get<double>(), 3.0);
+  EXPECT_NEAR(j["svg"]["max_snap_distance"].get<double>(), 2.9536, 1e-4);
+  EXPECT_EQ(j["edges_by_assignment"]["U"], 96);
+  const auto r0 = test::run_command(base + " --snap-loose-ends 0");
+  ASSERT_EQ(r0.status, 0) << r0.err;
+  const auto j0 = nlohmann::json::parse(r0.out);
+  EXPECT_EQ(j0["svg"]["loose_ends_snapped"], 0);
+  EXPECT_EQ(j0["edges_by_assignment"]["U"], 95);
+  bool dangling = false;
+  for (const auto& w : j0["warnings"]) dangling = dangling || w.get<std::string>().find("dangling") != std::string::npos;
+  EXPECT_TRUE(dangling);
+  const auto bad = test::run_command(base + " --snap-loose-ends -1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--snap-loose-ends"), std::string::npos) << bad.err;
+}
+
 TEST_F(ImportCli, InfoCheckAndTraceReadSvgDirectly) {
   const std::string svg = file("cross.svg",
                                "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect width=\"10\" height=\"10\" stroke=\"#000\"/>"
