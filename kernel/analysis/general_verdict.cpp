@@ -301,6 +301,29 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       lower[i] = bounds[i] > 0 ? 0.0 : -std::numbers::pi;
       upper[i] = bounds[i] < 0 ? 0.0 : std::numbers::pi;
     }
+    // One start of the norm search (amplitude_search, ||x||_2 = amplitude, letters as bounds);
+    // a converged point with its letters kept is a candidate. At the pattern's scale
+    // (`at_patterns_scale`): lettered creases stepped in log|x|, and the candidate must be
+    // traced back toward flat.
+    auto norm_search_start = [&](double amplitude, int iterations, bool at_patterns_scale) {
+      Eigen::VectorXd x0 = signed_start(sys, sign, opt, erng);
+      x0 *= amplitude / x0.norm();
+      AmplitudeSearchOptions ao;
+      ao.amplitude = amplitude;
+      ao.tolerance = opt.tolerances.residual;
+      ao.max_iterations = iterations;
+      ao.logarithmic = at_patterns_scale;
+      const AmplitudeSearchResult ar = amplitude_search(sys, x0, lower, upper, ao);
+      ++out.starts_tried;
+      if (ar.converged &&
+          first_crease_against_letter(sign, sys.edges_from_unknowns(ar.x), opt.tolerances.sign_threshold) < 0) {
+        ++out.starts_converged;
+        Eigen::Index k = 0;
+        ar.x.cwiseAbs().maxCoeff(&k);
+        candidates.push_back({ar.x, sys.edge_of_unknown(static_cast<int>(k)), at_patterns_scale});
+      }
+      return ar;
+    };
     std::vector<Eigen::VectorXd> best_x;  // per amplitude: the state of the least residual
     for (double eps : opt.evidence_amplitudes) {
       AmplitudeEvidence ev;
@@ -342,23 +365,9 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
           return "evidence search: norm-constrained least squares at fold amplitude " + progress_degrees(eps) +
                  " deg, start " + std::to_string(s + 1) + " of " + std::to_string(opt.norm_search_starts);
         });
-        Eigen::VectorXd x0 = signed_start(sys, sign, opt, erng);
-        x0 *= eps / x0.norm();
-        AmplitudeSearchOptions ao;
-        ao.amplitude = eps;
-        ao.tolerance = opt.tolerances.residual;
-        ao.max_iterations = opt.norm_search_iterations;
-        const AmplitudeSearchResult ar = amplitude_search(sys, x0, lower, upper, ao);
-        ++out.starts_tried;
+        const AmplitudeSearchResult ar = norm_search_start(eps, opt.norm_search_iterations, false);
         if (ev.norm_search_residual < 0 || ar.closure_residual < ev.norm_search_residual)
           ev.norm_search_residual = ar.closure_residual;
-        if (ar.converged &&
-            first_crease_against_letter(sign, sys.edges_from_unknowns(ar.x), opt.tolerances.sign_threshold) < 0) {
-          ++out.starts_converged;
-          Eigen::Index k = 0;
-          ar.x.cwiseAbs().maxCoeff(&k);
-          candidates.push_back({ar.x, sys.edge_of_unknown(static_cast<int>(k))});
-        }
         if (ar.closure_residual < ev.least_residual) {
           ev.least_residual = ar.closure_residual;
           ev.driving_edge = -1;
@@ -409,27 +418,12 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
         return "norm-constrained least squares at the pattern's scale, ||rho||_2 = " + progress_degrees(scaled) +
                " deg, start " + std::to_string(s + 1) + " of " + std::to_string(opt.scaled_norm_search_starts);
       });
-      Eigen::VectorXd x0 = signed_start(sys, sign, opt, erng);
-      x0 *= scaled / x0.norm();
-      AmplitudeSearchOptions ao;
-      ao.amplitude = scaled;
-      ao.tolerance = opt.tolerances.residual;
-      ao.max_iterations = opt.scaled_norm_search_iterations;
-      ao.logarithmic = true;
-      const AmplitudeSearchResult ar = amplitude_search(sys, x0, lower, upper, ao);
-      ++out.starts_tried;
+      const AmplitudeSearchResult ar = norm_search_start(scaled, opt.scaled_norm_search_iterations, true);
       ++out.scaled_norm_starts;
       out.scaled_norm_residual = out.scaled_norm_residual < 0 ? ar.closure_residual
                                                               : std::min(out.scaled_norm_residual, ar.closure_residual);
-      if (ar.converged &&
-          first_crease_against_letter(sign, sys.edges_from_unknowns(ar.x), opt.tolerances.sign_threshold) < 0) {
-        ++out.starts_converged;
-        Eigen::Index k = 0;
-        ar.x.cwiseAbs().maxCoeff(&k);
-        candidates.push_back({ar.x, sys.edge_of_unknown(static_cast<int>(k)), true});
-      }
     }
-    out.scaled_norm_amplitude = run_scaled ? scaled : 0.0;
+    out.scaled_norm_amplitude = out.scaled_norm_starts > 0 ? scaled : 0.0;
     // Does the rounding of the coordinates explain the least residual (header, step 5)?
     if (candidates.empty()) {
       for (std::size_t a = 0; a < out.evidence.size(); ++a) {

@@ -877,14 +877,16 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
   ArrangementOptions ao;
   ao.tolerance = summary.merge_tolerance;
   ao.max_candidate_pairs = kMaxSvgCandidatePairs;
-  PlanarArrangement arr;
-  try {
-    arr = build_planar_arrangement(parser.segments, ao);
-  } catch (const std::length_error& e) {
-    throw InputError(source, std::string(e.what()) + " (input_limits.hpp)");
-  } catch (const std::invalid_argument& e) {
-    throw InputError(source, e.what());
-  }
+  auto arrange = [&] {
+    try {
+      return build_planar_arrangement(parser.segments, ao);
+    } catch (const std::length_error& e) {
+      throw InputError(source, std::string(e.what()) + " (input_limits.hpp)");
+    } catch (const std::invalid_argument& e) {
+      throw InputError(source, e.what());
+    }
+  };
+  PlanarArrangement arr = arrange();
   // Lines stopping short of their vertex joined to it (loose_end_snap.hpp), then rebuilt.
   if (!(options.loose_end_snap >= 0) || !std::isfinite(options.loose_end_snap))
     throw InputError(source, "loose-end snap distance " + fmt(options.loose_end_snap) + " must be finite and >= 0");
@@ -895,13 +897,7 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
     summary.loose_ends_snapped = snapped.ends_snapped;
     summary.loose_ends_onto_lines = snapped.onto_lines;
     summary.max_snap_distance = snapped.max_distance;
-    try {
-      arr = build_planar_arrangement(parser.segments, ao);
-    } catch (const std::length_error& e) {
-      throw InputError(source, std::string(e.what()) + " (input_limits.hpp)");
-    } catch (const std::invalid_argument& e) {
-      throw InputError(source, e.what());
-    }
+    arr = arrange();
   }
   auto point = [](const Eigen::Vector2d& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; };
   if (!arr.conflicts.empty()) {
@@ -1004,7 +1000,8 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
                           : snapped.onto_lines > 0                   ? std::string("vertex or line")
                                                                      : std::string("vertex")) +
                          " they stop short of (largest move " + fmt(snapped.max_distance) + ", snap distance " +
-                         fmt(summary.loose_end_snap) + " = Origami Simulator's vertex tolerance; e.g. " +
+                         fmt(summary.loose_end_snap) +
+                         (summary.loose_end_snap == 3.0 ? " = Origami Simulator's vertex tolerance" : std::string()) + "; e.g. " +
                          parser.element_names[snapped.source_example] + ")");
   if (snapped.skipped_too_many)
     p.warnings.push_back(source + ": too many loose line ends to join them to their vertices (input_limits.hpp); they are removed as dangling");

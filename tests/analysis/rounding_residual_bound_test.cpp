@@ -136,6 +136,27 @@ TEST(RoundingResidualBound, AnSvgsDrawnBoxesBoundItsComputedVertices) {
   }
 }
 
+// The letters as bounds (valley >= 0, mountain <= 0, at most a half turn) and a pseudo-random
+// start on the letters' sides, per unknown.
+struct LetterBox {
+  Eigen::VectorXd lower, upper, start;
+  std::vector<int> sign;
+  LetterBox(const CreasePattern& p, const ClosureSystem& sys, std::uint64_t seed) {
+    const int n = sys.num_unknowns();
+    lower.resize(n);
+    upper.resize(n);
+    start.resize(n);
+    sign.resize(n);
+    SplitMix64 rng{seed};
+    for (int i = 0; i < n; ++i) {
+      sign[i] = assigned_fold_sign(p.assignments[sys.edge_of_unknown(i)]);
+      lower[i] = sign[i] > 0 ? 0.0 : -M_PI;
+      upper[i] = sign[i] < 0 ? 0.0 : M_PI;
+      start[i] = sign[i] * (0.05 + rng.uniform());
+    }
+  }
+};
+
 // The norm search finds the Miura's one motion at the size asked for, from a letter-respecting
 // start, with no crease held: the closed form's state at the same norm.
 TEST(AmplitudeSearch, FindsTheMiuraStateOfTheGivenNorm) {
@@ -143,15 +164,8 @@ TEST(AmplitudeSearch, FindsTheMiuraStateOfTheGivenNorm) {
   const CreasePattern p = generators::miura_ori(m);
   const Topology t = build_topology(p);
   const ClosureSystem sys(p, t);
-  const int n = sys.num_unknowns();
-  Eigen::VectorXd lower(n), upper(n), x0(n);
-  SplitMix64 rng{3};
-  for (int i = 0; i < n; ++i) {
-    const int s = assigned_fold_sign(p.assignments[sys.edge_of_unknown(i)]);
-    lower[i] = s > 0 ? 0.0 : -M_PI;
-    upper[i] = s < 0 ? 0.0 : M_PI;
-    x0[i] = s * (0.05 + rng.uniform());
-  }
+  const LetterBox box(p, sys, 3);
+  const Eigen::VectorXd &lower = box.lower, &upper = box.upper, &x0 = box.start;
   for (double eps : {0.3, 0.01}) {
     AmplitudeSearchOptions o;
     o.amplitude = eps;
@@ -179,15 +193,9 @@ TEST(AmplitudeSearch, LogarithmicStepsFindTheSameMiuraStateKeepingEveryLetterStr
   const Topology t = build_topology(p);
   const ClosureSystem sys(p, t);
   const int n = sys.num_unknowns();
-  Eigen::VectorXd lower(n), upper(n), x0(n);
-  std::vector<int> sign(n);
-  SplitMix64 rng{5};
-  for (int i = 0; i < n; ++i) {
-    sign[i] = assigned_fold_sign(p.assignments[sys.edge_of_unknown(i)]);
-    lower[i] = sign[i] > 0 ? 0.0 : -M_PI;
-    upper[i] = sign[i] < 0 ? 0.0 : M_PI;
-    x0[i] = sign[i] * (0.05 + rng.uniform());
-  }
+  const LetterBox box(p, sys, 5);
+  const Eigen::VectorXd &lower = box.lower, &upper = box.upper, &x0 = box.start;
+  const std::vector<int>& sign = box.sign;
   for (double eps : {0.3, 0.01}) {
     AmplitudeSearchOptions o;
     o.amplitude = eps;
