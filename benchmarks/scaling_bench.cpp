@@ -112,6 +112,7 @@ void BM_Factorize(benchmark::State& state) {
   const Eigen::VectorXd dx = solver.solve(J, r);
   state.counters["linear_residual"] = (J * dx - r).lpNorm<Eigen::Infinity>();
   state.counters["ordering"] = static_cast<double>(state.range(1));
+  state.counters["supernodal"] = solver.supernodal();
   finish(state, c.pattern);
 }
 
@@ -130,6 +131,7 @@ void BM_Corrector(benchmark::State& state) {
   state.counters["error_vs_closed_form"] = (res.x - c.exact).cwiseAbs().maxCoeff();
   state.counters["ordering"] = static_cast<double>(state.range(1));
   state.counters["tolerance"] = o.tolerance;
+  state.counters["supernodal"] = res.supernodal;
   finish(state, c.pattern);
 }
 

@@ -280,8 +280,9 @@ def profile_section(fams, largest):
         out.append(f"- Corrector at {cells(corr)} x {cells(corr)} ({int(corr['edges'])} creases): {tc:.3g} s for "
                    f"{its:.0f} Newton iterations; one numeric factorisation of J^T J + lambda I costs {tf:.3g} s "
                    f"(BM_Factorize), so factorisations are ~{min(its * tf / tc, 1) * 100:.0f}% of it. The factorisation "
-                   f"is flop-bound (simplicial CHOLMOD LLT, fill of a 2D mesh under AMD or nested dissection): a single one "
-                   f"already exceeds the 1 s budget there.")
+                   f"is flop-bound ({'supernodal' if fact.get('supernodal') else 'simplicial'} CHOLMOD LLT, fill of a 2D "
+                   f"mesh under AMD or nested dissection: flops grow like size^1.5)"
+                   + (": a single one already exceeds the 1 s budget there." if tf > 1 else "."))
     for fam, label in (("BM_Trace_auto", "Newton, automatic linear solver (the default: PCG on a stale factor while it pays)"),
                        ("BM_Trace", "Newton, direct (a fresh factorisation per iteration)"),
                        ("BM_Trace_reuse", "factorisation reuse (chord, opt-in)")):

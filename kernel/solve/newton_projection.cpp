@@ -21,6 +21,24 @@ int cholmod_ordering(FactorOrdering o) {
   return -1;
 }
 
+// CHOLMOD's factorisation with the simplicial/supernodal choice made by its own rule
+// (supernodal iff flops / nnz(L) >= supernodal_switch), and the choice readable afterwards.
+// A simplicial factor is converted to LL^T as CholmodSimplicialLLT does (final_ll).
+class CholmodFactor : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, CholmodFactor> {
+ public:
+  explicit CholmodFactor(double supernodal_flops_per_entry = kSupernodalFlopsPerEntry) {
+    m_cholmod.final_asis = 0;
+    m_cholmod.final_ll = 1;
+    if (std::isinf(supernodal_flops_per_entry)) {
+      m_cholmod.supernodal = CHOLMOD_SIMPLICIAL;
+    } else {
+      m_cholmod.supernodal = CHOLMOD_AUTO;
+      m_cholmod.supernodal_switch = supernodal_flops_per_entry;
+    }
+  }
+  bool supernodal() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_super; }
+};
+
 }  // namespace
 
 // The symbolic side is built once from J's pattern:
@@ -42,8 +60,9 @@ struct MinimumNormSolver::Impl {
   std::vector<int> row_vals_begin;       // m + 1
   std::vector<int> diag_slot;            // nf: G value slot of each diagonal entry
   Eigen::SparseMatrix<double> G;         // nf x nf, lower triangle, fixed pattern
-  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  CholmodFactor llt;
   bool analysed = false;
+  explicit Impl(double supernodal_flops_per_entry) : llt(supernodal_flops_per_entry) {}
 
   void kept_transpose_times(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& r, Eigen::VectorXd& out) const {
     out.resize(nf);
@@ -76,8 +95,10 @@ struct MinimumNormSolver::Impl {
 };
 
 MinimumNormSolver::MinimumNormSolver(const Eigen::SparseMatrix<double>& J, const std::vector<int>& held,
-                                     FactorOrdering ordering)
-    : impl_(std::make_unique<Impl>()) {
+                                     FactorOrdering ordering, double supernodal_flops_per_entry)
+    : impl_(std::make_unique<Impl>(supernodal_flops_per_entry)) {
+  if (!(supernodal_flops_per_entry >= 0))
+    throw std::invalid_argument("MinimumNormSolver: supernodal_flops_per_entry must be >= 0");
   Impl& s = *impl_;
   if (!J.isCompressed()) throw std::invalid_argument("MinimumNormSolver: the Jacobian must be compressed");
   s.m = static_cast<int>(J.rows());
@@ -172,6 +193,7 @@ MinimumNormSolver::MinimumNormSolver(const Eigen::SparseMatrix<double>& J, const
 MinimumNormSolver::~MinimumNormSolver() = default;
 
 int MinimumNormSolver::unknowns() const { return impl_->n; }
+bool MinimumNormSolver::supernodal() const { return impl_->analysed && impl_->llt.supernodal(); }
 int MinimumNormSolver::kept_unknowns() const { return impl_->nf; }
 
 bool MinimumNormSolver::factorize(const Eigen::SparseMatrix<double>& J, double lambda_relative) {
@@ -292,6 +314,7 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
     result.factorizations = solver->factorizations();
     result.symbolic_analyses = solver->symbolic_analyses();
     result.lambda = solver->lambda();
+    result.supernodal = solver->supernodal();
   };
   while (rnorm > options.tolerance && result.iterations < options.max_iterations) {
     if (!solver) solver = std::make_unique<MinimumNormSolver>(J, options.held_unknowns, options.ordering);

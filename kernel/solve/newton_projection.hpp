@@ -14,13 +14,21 @@
 // For lambda -> 0 dx is the minimum-norm solution of J_f dx = r, so the iteration moves
 // x the least distance that closes the loops to first order, and it converges
 // quadratically at regular points of the manifold.
-// G is factorised with CHOLMOD's simplicial LLT, single-threaded. (Measured on this 2-core
-// machine, Miura G from 1,740 to 319,200 unknowns: the supernodal LLT took 7x to 1.5x as long
-// (50 x 50: 8.8 against 1.4 ms; 400 x 400: 804 against 518 ms) - its BLAS calls on small
-// supernodes and the OpenMP region CHOLMOD opens with 4 threads in every factorisation cost
-// more than they save on these 2D meshes, with ATLAS or OpenBLAS alike.) Its sparsity pattern does not change
-// between steps, so the symbolic analysis is done once; each step assembles G's values into
-// that fixed pattern (O(sum over rows of nnz(row)^2)) and only refactorises.
+// G is factorised by CHOLMOD, simplicial or supernodal by CHOLMOD's rule on the symbolic
+// factor: supernodal iff flops / nnz(L) >= kSupernodalFlopsPerEntry (120; CHOLMOD's default
+// is 40). Measured on this 2-core machine (Miura G, factorisation of equal values, the
+// supernodal one on OpenBLAS with 2 threads, which scripts/bootstrap.sh installs):
+//     cells      unknowns   flops/nnz(L)   simplicial   supernodal
+//     100 x 100     20,200         54       0.009 s      0.013 s
+//     200 x 200     79,600         88       0.070 s      0.062 s   (a solve: 0.005 / 0.009 s)
+//     300 x 300    179,400        125       0.240 s      0.157 s
+//     1000 x 1000 1,998,000        325       9.06 s       1.97 s    (on ATLAS: 4.7 s)
+// Below the switch the supernodal factor's BLAS calls on small supernodes and its slower
+// triangular solves (the continuation's PCG solves many times per factor) cost more than
+// they save; above it the dense separators of these 2D meshes dominate and BLAS-3 wins.
+// G's sparsity pattern does not change between steps, so the symbolic analysis (ordering and
+// the simplicial/supernodal choice) is done once; each step assembles G's values into that
+// fixed pattern (O(sum over rows of nnz(row)^2)) and only refactorises.
 // G is singular whenever the system has DOF (it always has, for a foldable pattern), hence
 // lambda > 0: lambda = lambda_relative * max diag(G), multiplied by 100 and retried if the
 // numeric factorisation still meets a non-positive pivot.
@@ -39,6 +47,10 @@ namespace rigidfold {
 // when AMD's fill is large; the smaller factor wins). kNestedDissection is CHOLMOD's NESDIS
 // (METIS-based nested dissection), asymptotically best for 2D meshes.
 enum class FactorOrdering { kDefault, kAmd, kMetis, kNestedDissection };
+
+// CHOLMOD's supernodal_switch: a factor with at least this many flops per entry of L is
+// factorised supernodally (see the measurements above).
+inline constexpr double kSupernodalFlopsPerEntry = 120.0;
 
 struct NewtonOptions {
   double tolerance = 1e-12;         // stop when ||r||_inf <= tolerance (radians)
@@ -68,6 +80,7 @@ struct NewtonResult {
   int factorizations = 0;                // numeric factorisations (>= iterations; retries count)
   int symbolic_analyses = 0;             // 1 unless the pattern changed (it does not for a ClosureSystem)
   double lambda = 0.0;                   // regularisation used in the last step
+  bool supernodal = false;               // G's factor was CHOLMOD's supernodal one
 };
 
 // The linear algebra of the corrector, reusable across Newton steps and continuation
@@ -78,8 +91,11 @@ struct NewtonResult {
 // are dropped (their step is 0).
 class MinimumNormSolver {
  public:
+  // supernodal_flops_per_entry: CHOLMOD's supernodal_switch (0: always supernodal, infinity:
+  // always simplicial; the default is measured above).
   MinimumNormSolver(const Eigen::SparseMatrix<double>& jacobian_pattern, const std::vector<int>& held = {},
-                    FactorOrdering ordering = FactorOrdering::kDefault);
+                    FactorOrdering ordering = FactorOrdering::kDefault,
+                    double supernodal_flops_per_entry = kSupernodalFlopsPerEntry);
   ~MinimumNormSolver();
   MinimumNormSolver(const MinimumNormSolver&) = delete;
   MinimumNormSolver& operator=(const MinimumNormSolver&) = delete;
@@ -101,6 +117,7 @@ class MinimumNormSolver {
   double lambda() const { return lambda_; }
   int unknowns() const;       // n, the Jacobian's columns
   int kept_unknowns() const;  // n minus the held unknowns
+  bool supernodal() const;    // the factor is CHOLMOD's supernodal one (false before a factorize)
   int factorizations() const { return factorizations_; }
   int symbolic_analyses() const { return symbolic_analyses_; }
 

@@ -2,11 +2,13 @@
 // closed form recovered when the driving crease is held.
 #include "kernel/solve/newton_projection.hpp"
 
+#include <Eigen/QR>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -209,6 +211,58 @@ TEST(SolverNewton, SignBoundsKeepEveryIterateOnItsSide) {
   std::cout << "[ newton   ] " << flipped << " of " << n << " start entries on the wrong side\n";
   opt.sign_bounds.pop_back();
   EXPECT_THROW(newton_project(sys, x0, opt), std::invalid_argument);
+}
+
+// The factor kind (CHOLMOD simplicial or supernodal, chosen by kSupernodalFlopsPerEntry) must
+// not change the answer: both give the minimum-norm step of a dense complete orthogonal
+// decomposition and the same null vector, with and without a held crease (the singular G of
+// a 1-DOF Miura, regularised by lambda, and the regular one).
+TEST(MinimumNormSolverFactor, SupernodalAndSimplicialFactorsGiveTheDenseMinimumNormStep) {
+  generators::MiuraParams m;
+  m.rows = 12;
+  m.cols = 13;
+  m.alpha = 1.1;
+  const CreasePattern p = generators::miura_ori(m);
+  const ClosureSystem sys(p, build_topology(p));
+  std::mt19937_64 rng(17);
+  const Eigen::VectorXd exact = sys.unknowns_from_edges(miura_edge_angles(p, m, 1.3));
+  const Eigen::VectorXd x = exact + random_vector(sys.num_unknowns(), rng, 1e-4);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  sys.evaluate(x, r, J);
+  const Eigen::VectorXd guess = Eigen::VectorXd::Ones(sys.num_unknowns());
+  for (const std::vector<int>& held : {std::vector<int>{}, std::vector<int>{0}}) {
+    // Dense reference: the minimum-norm least-squares solution of J_f dx = r.
+    Eigen::MatrixXd Jf = Eigen::MatrixXd(J);
+    for (int k : held) Jf.col(k).setZero();
+    const Eigen::VectorXd reference = Jf.completeOrthogonalDecomposition().solve(r);
+    MinimumNormSolver simplicial(J, held, FactorOrdering::kDefault, std::numeric_limits<double>::infinity());
+    MinimumNormSolver supernodal(J, held, FactorOrdering::kDefault, 0.0);
+    MinimumNormSolver by_default(J, held);
+    ASSERT_TRUE(simplicial.factorize(J, 1e-14));
+    ASSERT_TRUE(supernodal.factorize(J, 1e-14));
+    ASSERT_TRUE(by_default.factorize(J, 1e-14));
+    EXPECT_FALSE(simplicial.supernodal());
+    EXPECT_TRUE(supernodal.supernodal());
+    EXPECT_FALSE(by_default.supernodal()) << "a few hundred unknowns stay below the switch";
+    const Eigen::VectorXd a = simplicial.solve(J, r), b = supernodal.solve(J, r);
+    const double scale = reference.lpNorm<Eigen::Infinity>();
+    EXPECT_LE((a - reference).lpNorm<Eigen::Infinity>(), 1e-8 * scale) << held.size();
+    EXPECT_LE((b - reference).lpNorm<Eigen::Infinity>(), 1e-8 * scale) << held.size();
+    EXPECT_LE((a - b).lpNorm<Eigen::Infinity>(), 1e-10 * scale) << held.size();
+  }
+  // The null vector of the exact (1-DOF) state, by inverse iteration on either factor.
+  Eigen::VectorXd r0;
+  Eigen::SparseMatrix<double> J0;
+  sys.evaluate(exact, r0, J0);
+  MinimumNormSolver simplicial(J0, {}, FactorOrdering::kDefault, std::numeric_limits<double>::infinity());
+  MinimumNormSolver supernodal(J0, {}, FactorOrdering::kDefault, 0.0);
+  ASSERT_TRUE(simplicial.factorize(J0, 1e-14));
+  ASSERT_TRUE(supernodal.factorize(J0, 1e-14));
+  const Eigen::VectorXd wa = simplicial.null_vector(J0, guess), wb = supernodal.null_vector(J0, guess);
+  EXPECT_LE((wa - wb).lpNorm<Eigen::Infinity>(), 1e-10);
+  EXPECT_LE((J0 * wb).lpNorm<Eigen::Infinity>(), 1e-13);
+  EXPECT_THROW(MinimumNormSolver(J, {}, FactorOrdering::kDefault, -1.0), std::invalid_argument);
 }
 
 }  // namespace
