@@ -9,7 +9,7 @@
 #                                            at 160 and 320, solver settings at 320
 #   bash scripts/bench_report.sh --large1000 as --large, plus residual, Jacobian, factorisation
 #                                            and one corrector at 1000 x 1000 cells (2M creases;
-#                                            the corrector alone: ~16 s, 2.3 GB peak on 2 cores)
+#                                            the corrector alone: ~8 s, 2.3 GB peak on 2 cores)
 # Environment: BUILD_DIR (default build-bench), OUT (default out/bench).
 set -euo pipefail
 cd "$(dirname "$0")/.."
