@@ -243,10 +243,10 @@ Json foldability_json(const FoldabilityReport& r) {
     j["search_evidence"] = {{"sign_respecting_least_squares", ev},
                             {"growth_exponent", r.residual_growth_exponent},
                             {"evidence_floor_rad", r.tolerances.evidence_floor}};
-    if (r.scaled_norm_starts > 0)
-      j["search_evidence"]["at_the_patterns_scale"] = {{"norm_rad", r.scaled_norm_amplitude},
-                                                       {"starts", r.scaled_norm_starts},
-                                                       {"least_residual_rad", r.scaled_norm_residual},
+    if (const ScaledNormSearch& sn = r.scaled_norm_search; sn.starts > 0)
+      j["search_evidence"]["at_the_patterns_scale"] = {{"norm_rad", sn.amplitude},
+                                                       {"starts", sn.starts},
+                                                       {"least_residual_rad", sn.least_residual},
                                                        {"is_evidence", false}};
   }
   j["max_residual"] = r.max_residual;

@@ -351,9 +351,7 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
   if (g.verdict == Verdict::kRigidlyFoldable) r.strictness = g.strictness;
   r.search_evidence = g.evidence;
   r.residual_growth_exponent = g.growth_exponent;
-  r.scaled_norm_amplitude = g.scaled_norm_amplitude;
-  r.scaled_norm_starts = g.scaled_norm_starts;
-  r.scaled_norm_residual = g.scaled_norm_residual;
+  r.scaled_norm_search = g.scaled_norm_search;
   r.max_residual = g.trace.max_residual;
   if (g.verdict == Verdict::kRigidlyFoldable) {
     r.certificate_mismatch = g.certificate_mismatch;

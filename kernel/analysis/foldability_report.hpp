@@ -126,11 +126,8 @@ struct FoldabilityReport {
   // evidence behind "not foldable (evidence)" or "undecided".
   std::vector<AmplitudeEvidence> search_evidence;
   double residual_growth_exponent = 0.0;
-  // ... and the norm search at the pattern's own scale (not evidence): ||x||_2 sought
-  // (radians; 0: not run), its starts and least residual (radians).
-  double scaled_norm_amplitude = 0.0;
-  int scaled_norm_starts = 0;
-  double scaled_norm_residual = -1.0;
+  // ... and the norm search at the pattern's own scale (not evidence).
+  ScaledNormSearch scaled_norm_search;
   std::optional<FoldabilityObstruction> obstruction;  // when not foldable
   double max_residual = 0.0;        // largest closure residual along the reported branches (rad)
   std::optional<double> certificate_mismatch;     // face placement of the certificate (relative)

@@ -419,11 +419,11 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
                " deg, start " + std::to_string(s + 1) + " of " + std::to_string(opt.scaled_norm_search_starts);
       });
       const AmplitudeSearchResult ar = norm_search_start(scaled, opt.scaled_norm_search_iterations, true);
-      ++out.scaled_norm_starts;
-      out.scaled_norm_residual = out.scaled_norm_residual < 0 ? ar.closure_residual
-                                                              : std::min(out.scaled_norm_residual, ar.closure_residual);
+      ScaledNormSearch& sn = out.scaled_norm_search;
+      ++sn.starts;
+      sn.least_residual = sn.least_residual < 0 ? ar.closure_residual : std::min(sn.least_residual, ar.closure_residual);
+      sn.amplitude = scaled;
     }
-    out.scaled_norm_amplitude = out.scaled_norm_starts > 0 ? scaled : 0.0;
     // Does the rounding of the coordinates explain the least residual (header, step 5)?
     if (candidates.empty()) {
       for (std::size_t a = 0; a < out.evidence.size(); ++a) {

@@ -155,6 +155,13 @@ struct SingularPoint {
   double max_fold = 0.0;        // max |rho| there (radians)
 };
 
+// The norm search at the pattern's own scale (step 5): a source of candidates, never evidence.
+struct ScaledNormSearch {
+  double amplitude = 0.0;        // ||x||_2 sought (radians; 0: not run)
+  int starts = 0;                // starts run
+  double least_residual = -1.0;  // least ||r||_inf over them (radians; -1: not run)
+};
+
 // The least sign-respecting closure residual found at one fold amplitude (step 5).
 struct AmplitudeEvidence {
   double amplitude = 0.0;       // |driving crease| held, and ||x||_2 of the norm search (radians)
@@ -211,9 +218,7 @@ struct GeneralVerdict {
   // Evidence search (step 5; empty when a candidate came from the first search).
   std::vector<AmplitudeEvidence> evidence;
   double growth_exponent = 0.0;        // of the least residual between the two largest amplitudes
-  double scaled_norm_amplitude = 0.0;  // ||x||_2 of the search at the pattern's scale (0: not run)
-  int scaled_norm_starts = 0;          // its starts
-  double scaled_norm_residual = -1.0;  // its least ||r||_inf (radians; -1: not run)
+  ScaledNormSearch scaled_norm_search;  // the search at the pattern's scale
   // Obstruction (kNotRigidlyFoldable, or kUndecided from the evidence search).
   double least_residual = -1.0;        // least ||r||_inf by Gauss-Newton with the driving crease held
   std::vector<std::pair<int, double>> worst_vertices;  // (pattern vertex, ||r_v||_2), largest first, at most 5

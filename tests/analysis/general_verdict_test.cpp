@@ -187,12 +187,12 @@ TEST(GeneralVerdictCorpus, TriangulatedHyparIsStrictlyFoldableFoundAtThePatterns
   ASSERT_EQ(g.verdict, Verdict::kRigidlyFoldable) << g.reason;
   EXPECT_TRUE(g.is_proof);
   EXPECT_EQ(g.trace.dof_at_departure, 1);
-  EXPECT_GT(g.scaled_norm_amplitude, 0.4);
+  EXPECT_GT(g.scaled_norm_search.amplitude, 0.4);
   EXPECT_NE(g.trace_method.find("fold size"), std::string::npos) << g.trace_method;
   EXPECT_TRUE(g.strictness.strict);
   EXPECT_LE(g.trace.max_residual, 1e-12);
   ASSERT_FALSE(g.trace.path.empty());
-  EXPECT_LE(g.traced_toward_flat_to, g.scaled_norm_amplitude / 100 * (1 + 1e-6));
+  EXPECT_LE(g.traced_toward_flat_to, g.scaled_norm_search.amplitude / 100 * (1 + 1e-6));
   EXPECT_LE(g.trace.path.front().norm(), g.traced_toward_flat_to * (1 + 1e-9));
   EXPECT_GE(g.trace.max_fold, rad(30));
   for (std::size_t i = 0; i < g.trace.path.size(); ++i)
