@@ -444,7 +444,7 @@ void register_all() {
       if (mode < 2 || n >= 40) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
   if (large >= 1)
     for (int n : {160, 320})
-      for (int mode : {1, 0, 2}) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
+      for (int mode : {1, 0, 2, 3}) add("BM_Trace", BM_Trace)->Args({n, mode})->Iterations(1);
   for (int n : {10, 20, 40, 100, 200}) add("BM_Rank", BM_Rank)->Args({n, 0});
   for (int n : {20, 40}) add("BM_Rank", BM_Rank)->Args({n, 3});
   if (large >= 1) add("BM_Rank", BM_Rank)->Args({320, 0});
