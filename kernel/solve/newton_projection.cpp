@@ -26,7 +26,7 @@ int cholmod_ordering(FactorOrdering o) {
 // A simplicial factor is converted to LL^T as CholmodSimplicialLLT does (final_ll).
 class CholmodFactor : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, CholmodFactor> {
  public:
-  explicit CholmodFactor(double supernodal_flops_per_entry = kSupernodalFlopsPerEntry) {
+  explicit CholmodFactor(double supernodal_flops_per_entry) {
     m_cholmod.final_asis = 0;
     m_cholmod.final_ll = 1;
     if (std::isinf(supernodal_flops_per_entry)) {
