@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -124,14 +125,20 @@ void BM_Corrector(benchmark::State& state) {
   o.held_unknowns = {0};
   o.ordering = static_cast<FactorOrdering>(state.range(1));
   o.tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
+  // range(3): 0 = the default, 1 = every step on a fresh factorisation (no stale-factor steps).
+  if (state.range(3) == 1) o.stale_factor_min_unknowns = std::numeric_limits<int>::max();
   NewtonResult res;
   for (auto _ : state) res = newton_project(c.system, c.start, o);
   state.counters["newton_iterations"] = res.iterations;
+  state.counters["factorizations"] = res.factorizations;
+  state.counters["stale_steps"] = res.stale_steps;
+  state.counters["stale_its"] = res.stale_iterations;
   state.counters["residual"] = res.residual_history.back();
   state.counters["error_vs_closed_form"] = (res.x - c.exact).cwiseAbs().maxCoeff();
   state.counters["ordering"] = static_cast<double>(state.range(1));
   state.counters["tolerance"] = o.tolerance;
   state.counters["supernodal"] = res.supernodal;
+  state.counters["fresh_only"] = static_cast<double>(state.range(3));
   finish(state, c.pattern);
 }
 
@@ -416,7 +423,8 @@ void register_all() {
     add("BM_Residual", BM_Residual)->Arg(n);
     add("BM_Jacobian", BM_Jacobian)->Arg(n);
     add("BM_Factorize", BM_Factorize)->Args({n, 0});
-    add("BM_Corrector", BM_Corrector)->Args({n, 0, 12});
+    add("BM_Corrector", BM_Corrector)->Args({n, 0, 12, 0});
+    add("BM_Corrector", BM_Corrector)->Args({n, 0, 12, 1});  // every step refactorised
     for (int mode : {1, 0, 2}) add("BM_ContinuationStep", BM_ContinuationStep)->Args({n, mode});
     add("BM_GradedMultiplier", BM_GradedMultiplier)->Arg(n);
     add("BM_GradedCorrector", BM_GradedCorrector)->Arg(n);
@@ -425,16 +433,22 @@ void register_all() {
     add("BM_Residual", BM_Residual)->Arg(1000)->Iterations(1);
     add("BM_Jacobian", BM_Jacobian)->Arg(1000)->Iterations(1);
     add("BM_Factorize", BM_Factorize)->Args({1000, 0})->Iterations(1);
-    add("BM_Corrector", BM_Corrector)->Args({1000, 0, 12})->Iterations(1);
+    add("BM_Corrector", BM_Corrector)->Args({1000, 0, 12, 0})->Iterations(1);
+    add("BM_Corrector", BM_Corrector)->Args({1000, 0, 12, 1})->Iterations(1);
+    // Orderings at 2M unknowns (AMD, METIS, NESDIS): the fill, hence the factorisation's cost, differs most here.
+    for (int ord = 1; ord <= 3; ++ord) {
+      add("BM_Factorize", BM_Factorize)->Args({1000, ord})->Iterations(1);
+      add("BM_Corrector", BM_Corrector)->Args({1000, ord, 12, 0})->Iterations(1);
+    }
     for (int reuse : {1, 0}) add("BM_ContinuationStep", BM_ContinuationStep)->Args({1000, reuse})->Iterations(1);
   }
   // Solver settings (time against error) on one mid size: orderings and tolerances.
   const int mid = large >= 1 ? 320 : 100;
   for (int ord = 1; ord <= 3; ++ord) {
     add("BM_Factorize", BM_Factorize)->Args({mid, ord});
-    add("BM_Corrector", BM_Corrector)->Args({mid, ord, 12});
+    add("BM_Corrector", BM_Corrector)->Args({mid, ord, 12, 0});
   }
-  for (int tol : {6, 8, 10}) add("BM_Corrector", BM_Corrector)->Args({mid, 0, tol});
+  for (int tol : {6, 8, 10}) add("BM_Corrector", BM_Corrector)->Args({mid, 0, tol, 0});
   // Traces, range(1): 1 = factorisation reuse, 0 = Newton (direct), 2 = Newton (PCG), 3 = the
   // automatic choice (2 and 3 from 40 x 40 up only). Up to 2000 unknowns the continuation checks DOF = 1 at every point (dense
   // SVD up to 200 unknowns, the factor subspace above: n = 30 took minutes with the dense SVD

@@ -40,6 +40,8 @@ def family(run):
         # range(1): 0 direct Newton (the family itself), 2 PCG, 3 the automatic choice.
         mode = parts[2] if len(parts) > 2 and parts[2].isdigit() else "0"
         return name + {"2": "_pcg", "3": "_auto"}.get(mode, "")
+    if name == "BM_Corrector" and run.get("fresh_only", 0) == 1:
+        return name + "_fresh"  # every Newton step on a fresh factorisation (no stale-factor steps)
     return name
 
 

@@ -249,6 +249,51 @@ Eigen::VectorXd MinimumNormSolver::solve(const Eigen::SparseMatrix<double>& J, c
   return dx;
 }
 
+StaleSolveResult MinimumNormSolver::solve_with_stale_factor(const Eigen::SparseMatrix<double>& J,
+                                                            const Eigen::VectorXd& r, double relative_tolerance,
+                                                            int max_iterations) const {
+  const Impl& s = *impl_;
+  StaleSolveResult out;
+  out.dx = Eigen::VectorXd::Zero(s.n);
+  // CGLS on J_f z = r, residual s_res = r - J_f z carried explicitly, M = G_o^-1.
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(s.nf), s_res = r, g, y, p, q;
+  s.kept_transpose_times(J, s_res, g);
+  y = s.llt.solve(g);
+  double gamma = g.dot(y);
+  const double gamma0 = gamma;
+  if (gamma0 == 0.0) {
+    out.converged = true;  // r orthogonal to range(J_f): dx = 0
+    return out;
+  }
+  if (!(gamma0 > 0.0) || !std::isfinite(gamma0)) return out;
+  const double target = relative_tolerance * relative_tolerance * gamma0;
+  p = y;
+  while (out.iterations < max_iterations) {
+    s.kept_times(J, p, q);
+    const double qq = q.squaredNorm();
+    if (!(qq > 0.0) || !std::isfinite(qq)) break;
+    const double alpha = gamma / qq;
+    z += alpha * p;
+    s_res -= alpha * q;
+    s.kept_transpose_times(J, s_res, g);
+    y = s.llt.solve(g);
+    const double gamma_new = g.dot(y);
+    ++out.iterations;
+    out.relative_residual = std::sqrt(std::max(gamma_new, 0.0) / gamma0);
+    if (!std::isfinite(gamma_new)) break;
+    if (gamma_new <= target) {
+      out.converged = true;
+      break;
+    }
+    if (!(gamma_new > 0.0)) break;  // M lost definiteness in rounding: the caller refactorises
+    p = y + (gamma_new / gamma) * p;
+    gamma = gamma_new;
+  }
+  if (out.converged)
+    for (int f = 0; f < s.nf; ++f) out.dx[s.kept[f]] = z[f];
+  return out;
+}
+
 Eigen::VectorXd MinimumNormSolver::null_vector(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& guess) const {
   const Impl& s = *impl_;
   Eigen::VectorXd g(s.nf);
@@ -316,22 +361,63 @@ NewtonResult newton_project(const ClosureSystem& system, const Eigen::VectorXd& 
     result.lambda = solver->lambda();
     result.supernodal = solver->supernodal();
   };
+  // A factor from the previous step that may precondition this one (see NewtonOptions).
+  bool stale_usable = false;
   while (rnorm > options.tolerance && result.iterations < options.max_iterations) {
     if (!solver) solver = std::make_unique<MinimumNormSolver>(J, options.held_unknowns, options.ordering);
-    const bool ok = solver->factorize(J, options.lambda_relative);
-    record();
-    if (!ok) return result;
-    Eigen::VectorXd dx = solver->solve(J, r);
+    Eigen::VectorXd dx;
+    bool stale = false;
+    if (stale_usable && solver->kept_unknowns() >= options.stale_factor_min_unknowns) {
+      // Forcing term: the linear error should leave about rnorm^2, and never need to go
+      // below 1% of the tolerance.
+      const double forcing = std::min(0.1, std::max(rnorm, 0.01 * options.tolerance / rnorm));
+      StaleSolveResult st = solver->solve_with_stale_factor(J, r, forcing, options.stale_max_iterations);
+      result.stale_iterations += st.iterations;
+      if (st.converged) {
+        dx = std::move(st.dx);
+        stale = true;
+      } else {
+        ++result.stale_rejections;
+      }
+    }
+    if (!stale) {
+      const bool ok = solver->factorize(J, options.lambda_relative);
+      record();
+      if (!ok) return result;
+      dx = solver->solve(J, r);
+    }
     const double step = dx.lpNorm<Eigen::Infinity>();
-    if (!std::isfinite(step)) return result;
+    if (!std::isfinite(step)) {
+      if (stale) {  // try again on a fresh factor
+        ++result.stale_rejections;
+        stale_usable = false;
+        continue;
+      }
+      return result;
+    }
     if (step > options.max_step) dx *= options.max_step / step;
+    const Eigen::VectorXd x_before = stale ? result.x : Eigen::VectorXd();
     result.x -= dx;
     // Projection onto the sign box; held unknowns have dx = 0 and stay where they were.
     for (int k = 0; k < static_cast<int>(options.sign_bounds.size()); ++k)
       if (options.sign_bounds[k] * result.x[k] < 0) result.x[k] = 0.0;
-    ++result.iterations;
+    const double rnorm_before = rnorm;
     system.evaluate(result.x, r, J);
     rnorm = r.lpNorm<Eigen::Infinity>();
+    if (stale && !(rnorm < rnorm_before)) {
+      // The stale step did not reduce the residual: undo it; a fresh factorisation follows.
+      ++result.stale_rejections;
+      stale_usable = false;
+      result.x = x_before;
+      system.evaluate(result.x, r, J);
+      rnorm = rnorm_before;
+      continue;
+    }
+    if (stale) ++result.stale_steps;
+    // The factor preconditions the next step while it keeps Newton fast: a fresh one always,
+    // a stale one only if its step contracted the residual at least 10-fold.
+    stale_usable = !stale || rnorm <= 0.1 * rnorm_before;
+    ++result.iterations;
     result.residual_history.push_back(rnorm);
     const int w = options.stall_window;
     if (w > 0 && result.iterations >= w && rnorm > options.tolerance) {

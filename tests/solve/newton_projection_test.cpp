@@ -265,5 +265,98 @@ TEST(MinimumNormSolverFactor, SupernodalAndSimplicialFactorsGiveTheDenseMinimumN
   EXPECT_THROW(MinimumNormSolver(J, {}, FactorOrdering::kDefault, -1.0), std::invalid_argument);
 }
 
+// Stale-factor Newton steps (NewtonOptions::stale_factor_min_unknowns = 0 forces them at this
+// size): the same converged point as fresh factorisations, fewer factorisations, and the
+// fallback to a fresh factor when the stale solve is not allowed to converge.
+TEST(SolverNewton, StaleFactorStepsReachTheSamePointWithFewerFactorisations) {
+  generators::MiuraParams m;
+  m.rows = 14;
+  m.cols = 15;
+  m.alpha = 1.05;
+  const CreasePattern p = generators::miura_ori(m);
+  const ClosureSystem sys(p, build_topology(p));
+  std::mt19937_64 rng(23);
+  const Eigen::VectorXd exact = sys.unknowns_from_edges(miura_edge_angles(p, m, 1.7));
+  Eigen::VectorXd x0 = exact + random_vector(sys.num_unknowns(), rng, 1e-3);
+  x0[0] = exact[0];
+  for (const std::vector<int>& held : {std::vector<int>{0}, std::vector<int>{}}) {
+    NewtonOptions fresh_opt, stale_opt;
+    fresh_opt.held_unknowns = stale_opt.held_unknowns = held;
+    fresh_opt.stale_factor_min_unknowns = std::numeric_limits<int>::max();
+    stale_opt.stale_factor_min_unknowns = 0;
+    const NewtonResult fresh = newton_project(sys, x0, fresh_opt);
+    const NewtonResult stale = newton_project(sys, x0, stale_opt);
+    print_history("miura 14x15 stale-factor steps", stale);
+    ASSERT_TRUE(fresh.converged);
+    ASSERT_TRUE(stale.converged);
+    EXPECT_EQ(fresh.stale_steps, 0);
+    EXPECT_GE(stale.stale_steps, 1) << held.size();
+    EXPECT_EQ(stale.stale_rejections, 0) << held.size();
+    EXPECT_LT(stale.factorizations, fresh.factorizations) << held.size();
+    EXPECT_EQ(stale.factorizations + stale.stale_steps, stale.iterations) << "one factorisation per fresh step";
+    EXPECT_LE(stale.residual_history.back(), 1e-12);
+    expect_quadratic(stale.residual_history, 1e4);
+    if (!held.empty()) {
+      // Full column rank: one solution on the manifold through the held crease's value.
+      EXPECT_LE((stale.x - exact).lpNorm<Eigen::Infinity>(), 1e-10);
+      EXPECT_LE((stale.x - fresh.x).lpNorm<Eigen::Infinity>(), 1e-10);
+    } else {
+      // 1 DOF free: the first step is the same fresh minimum-norm step; the later ones are
+      // least-squares steps, not necessarily of minimum norm, so the end points may differ
+      // along the manifold, but by no more than the size of those later steps (~ the residual
+      // left after the first step), not by the size of the whole correction.
+      const double later = 10 * stale.residual_history[1];
+      EXPECT_NEAR((stale.x - x0).norm(), (fresh.x - x0).norm(), later);
+      EXPECT_LE((stale.x - fresh.x).lpNorm<Eigen::Infinity>(), later);
+    }
+  }
+  // No CGLS iteration allowed: every stale attempt is rejected and a fresh factorisation
+  // takes the step, as without stale steps.
+  NewtonOptions none;
+  none.held_unknowns = {0};
+  none.stale_factor_min_unknowns = 0;
+  none.stale_max_iterations = 0;
+  const NewtonResult fallback = newton_project(sys, x0, none);
+  EXPECT_TRUE(fallback.converged);
+  EXPECT_EQ(fallback.stale_steps, 0);
+  EXPECT_GE(fallback.stale_rejections, 1);
+  EXPECT_EQ(fallback.factorizations, fallback.iterations);
+  EXPECT_LE((fallback.x - exact).lpNorm<Eigen::Infinity>(), 1e-10);
+}
+
+// MinimumNormSolver::solve_with_stale_factor against the direct solve on a fresh factor at a
+// point 1e-3 rad away from the factor's (regular G: one crease held).
+TEST(MinimumNormSolverFactor, StaleFactorSolveMatchesTheFreshLeastSquaresStep) {
+  generators::MiuraParams m;
+  m.rows = 10;
+  m.cols = 11;
+  m.alpha = 1.2;
+  const CreasePattern p = generators::miura_ori(m);
+  const ClosureSystem sys(p, build_topology(p));
+  std::mt19937_64 rng(29);
+  const Eigen::VectorXd exact = sys.unknowns_from_edges(miura_edge_angles(p, m, 0.9));
+  const Eigen::VectorXd xo = exact + random_vector(sys.num_unknowns(), rng, 1e-3);
+  const Eigen::VectorXd x = exact + random_vector(sys.num_unknowns(), rng, 1e-3);
+  Eigen::VectorXd ro, r;
+  Eigen::SparseMatrix<double> Jo, J;
+  sys.evaluate(xo, ro, Jo);
+  sys.evaluate(x, r, J);
+  MinimumNormSolver stale(Jo, {0}), fresh(J, {0});
+  ASSERT_TRUE(stale.factorize(Jo, 1e-14));
+  ASSERT_TRUE(fresh.factorize(J, 1e-14));
+  const Eigen::VectorXd reference = fresh.solve(J, r);
+  const StaleSolveResult s = stale.solve_with_stale_factor(J, r, 1e-12, 50);
+  ASSERT_TRUE(s.converged);
+  EXPECT_GE(s.iterations, 2) << "a stale factor is not the exact inverse";
+  EXPECT_LE(s.relative_residual, 1e-12);
+  EXPECT_EQ(s.dx[0], 0.0) << "held unknown";
+  EXPECT_LE((s.dx - reference).lpNorm<Eigen::Infinity>(), 1e-9 * reference.lpNorm<Eigen::Infinity>());
+  // Too few iterations: reported as not converged, with no step.
+  const StaleSolveResult short_run = stale.solve_with_stale_factor(J, r, 1e-12, 1);
+  EXPECT_FALSE(short_run.converged);
+  EXPECT_EQ(short_run.iterations, 1);
+  EXPECT_EQ(short_run.dx.lpNorm<Eigen::Infinity>(), 0.0);
+}
+
 }  // namespace
 }  // namespace rigidfold
