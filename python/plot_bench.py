@@ -279,9 +279,14 @@ def profile_section(fams, largest):
     if corr is not None and fact is not None and cells(corr) == cells(fact):
         tc, tf = seconds(corr)[0], seconds(fact)[0]
         its = corr.get("newton_iterations", 0)
+        nfact = corr.get("factorizations", its)
+        stale = corr.get("stale_steps", 0)
+        stale_note = (f" ({stale:.0f} of them by CGLS on the first factor, {corr.get('stale_its', 0):.0f} CG iterations)"
+                      if stale > 0 else "")
         out.append(f"- Corrector at {cells(corr)} x {cells(corr)} ({int(corr['edges'])} creases): {tc:.3g} s for "
-                   f"{its:.0f} Newton iterations; one numeric factorisation of J^T J + lambda I costs {tf:.3g} s "
-                   f"(BM_Factorize), so factorisations are ~{min(its * tf / tc, 1) * 100:.0f}% of it. The factorisation "
+                   f"{its:.0f} Newton iterations{stale_note}, {nfact:.0f} numeric factorisation{'' if nfact == 1 else 's'} of "
+                   f"J^T J + lambda I at {tf:.3g} s each (BM_Factorize), so factorisations are ~{min(nfact * tf / tc, 1) * 100:.0f}% of it. "
+                   f"The factorisation "
                    f"is flop-bound ({'supernodal' if fact.get('supernodal') else 'simplicial'} CHOLMOD LLT, fill of a 2D "
                    f"mesh under AMD or nested dissection: flops grow like size^1.5)"
                    + (": a single one already exceeds the 1 s budget there." if tf > 1 else "."))

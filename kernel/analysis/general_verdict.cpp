@@ -193,6 +193,7 @@ void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0
   nopt.held_unknowns = {k};
   tr.trace.linear_solver = "direct (CHOLMOD, minimum-norm Newton with the driving crease held)";
   tr.trace.factorizations = 0;
+  int newton_steps = 0, stale_steps = 0;  // above NewtonOptions::stale_factor_min_unknowns some steps reuse a factor
   bool stop = tr.accept(x);
   while (!stop) {
     // Predictor: scale the whole point with the driving crease (keeps its shape and
@@ -202,6 +203,8 @@ void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0
     const Eigen::VectorXd xp = x * (target / x[k]);
     const NewtonResult nr = newton_project(sys, xp, nopt);
     tr.trace.factorizations += nr.factorizations;
+    newton_steps += nr.iterations;
+    stale_steps += nr.stale_steps;
     if (!nr.converged) {
       tr.stop(StopReason::kCorrectorFailed);
       break;
@@ -209,6 +212,10 @@ void trace_by_driving_crease(const ClosureSystem& sys, const Eigen::VectorXd& x0
     x = nr.x;
     stop = accept(x);
   }
+  if (stale_steps > 0)
+    tr.trace.linear_solver = "direct (CHOLMOD, minimum-norm Newton with the driving crease held); " +
+                             std::to_string(stale_steps) + " of " + std::to_string(newton_steps) +
+                             " Newton steps by CGLS preconditioned with the previous step's factor";
 }
 
 }  // namespace
