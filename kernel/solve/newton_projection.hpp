@@ -54,17 +54,19 @@ inline constexpr double kSupernodalFlopsPerEntry = 120.0;
 
 // Newton steps after the first reuse the last factor (CGLS preconditioned by it, see
 // MinimumNormSolver::solve_with_stale_factor) when the kept unknowns are at least this many.
-// Measured on this 2-core machine, a Miura from its closed form plus uniform noise, one
-// crease held, to 1e-12 (fresh: every step refactorised; CGLS iterations in brackets):
-//     cells      unknowns   noise   fresh      stale-factor steps
-//     30 x 30       1,860    1e-3   0.0020 s   0.0019 s  (4)
-//     100 x 100    20,200    1e-4   0.035 s    0.029 s   (3)
-//     100 x 100    20,200    1e-3   0.047 s    0.032 s   (5)
-//     160 x 160    51,520    1e-3   0.166 s    0.101 s   (7)
-//     1000 x 1000 1,998,000  1e-4   7.1 s      6.1 s     (4)
-// With no crease held (a singular G) the 30 x 30 case was 10% slower, the others faster, and
-// the point reached the same distance from the start. Below ~2e4 unknowns nothing is won.
-inline constexpr int kStaleNewtonMinUnknowns = 20000;
+// Measured on this 2-core machine, idle: a Miura from its closed form plus uniform noise of
+// 1e-4 / 1e-3 rad, one crease held, to 1e-12 (fresh: every step refactorised):
+//     cells      unknowns    fresh               stale-factor steps
+//     30 x 30       1,740    0.0021 / 0.0020 s   0.0018 / 0.0017 s
+//     50 x 50       4,900    0.0065 / 0.0088 s   0.0054 / 0.0058 s
+//     70 x 70       9,660    0.0142 / 0.0141 s   0.0110 / 0.0113 s
+//     100 x 100    19,800    0.0344 / 0.0471 s   0.0260 / 0.0300 s
+//     160 x 160    50,880         - / 0.166 s         - / 0.101 s
+//     1000 x 1000 1,998,000  7.11 s (1e-4)       5.91 s (BM_Corrector, 4 CGLS iterations)
+// With no crease held (a singular G) the gains were alike, except none at 30 x 30 / 1e-3.
+// The switch sits above the small patterns all the same: there a stale step saves under a
+// millisecond, and the verdict's least-squares searches on them keep their fresh steps.
+inline constexpr int kStaleNewtonMinUnknowns = 10000;
 
 struct NewtonOptions {
   double tolerance = 1e-12;         // stop when ||r||_inf <= tolerance (radians)
