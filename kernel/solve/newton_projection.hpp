@@ -19,7 +19,7 @@
 // is 40). Measured on this 2-core machine (Miura G, factorisation of equal values, the
 // supernodal one on OpenBLAS with 2 threads, which scripts/bootstrap.sh installs):
 //     cells      unknowns   flops/nnz(L)   simplicial   supernodal
-//     100 x 100     20,200         54       0.009 s      0.013 s
+//     100 x 100     19,800         54       0.009 s      0.013 s
 //     200 x 200     79,600         88       0.070 s      0.062 s   (a solve: 0.005 / 0.009 s)
 //     300 x 300    179,400        125       0.240 s      0.157 s
 //     1000 x 1000 1,998,000        325       9.06 s       1.97 s    (on ATLAS: 4.7 s)
@@ -28,7 +28,9 @@
 // they save; above it the dense separators of these 2D meshes dominate and BLAS-3 wins.
 // G's sparsity pattern does not change between steps, so the symbolic analysis (ordering and
 // the simplicial/supernodal choice) is done once; each step assembles G's values into that
-// fixed pattern (O(sum over rows of nnz(row)^2)) and only refactorises.
+// fixed pattern (O(sum over rows of nnz(row)^2)) and only refactorises. From
+// kStaleNewtonMinUnknowns kept unknowns up, the steps after the first do not even refactorise
+// while CGLS preconditioned by the last factor converges fast (NewtonOptions, below).
 // G is singular whenever the system has DOF (it always has, for a foldable pattern), hence
 // lambda > 0: lambda = lambda_relative * max diag(G), multiplied by 100 and retried if the
 // numeric factorisation still meets a non-positive pivot.
