@@ -281,7 +281,7 @@ def profile_section(fams, largest):
         its = corr.get("newton_iterations", 0)
         nfact = corr.get("factorizations", its)
         stale = corr.get("stale_steps", 0)
-        stale_note = (f" ({stale:.0f} of them by CGLS on the first factor, {corr.get('stale_its', 0):.0f} CG iterations)"
+        stale_note = (f" ({stale:.0f} of them by CGLS on an earlier factor, {corr.get('stale_its', 0):.0f} CG iterations)"
                       if stale > 0 else "")
         out.append(f"- Corrector at {cells(corr)} x {cells(corr)} ({int(corr['edges'])} creases): {tc:.3g} s for "
                    f"{its:.0f} Newton iterations{stale_note}, {nfact:.0f} numeric factorisation{'' if nfact == 1 else 's'} of "
