@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/solve/preconditioned_cgls.hpp"
+
 namespace rigidfold {
 
 namespace {
@@ -264,44 +266,23 @@ StaleSolveResult MinimumNormSolver::solve_with_stale_factor(const Eigen::SparseM
                                                             const Eigen::VectorXd& r, double relative_tolerance,
                                                             int max_iterations) const {
   const Impl& s = *impl_;
+  // CGLS on J_f z = r (z over the kept columns), residual s_res = r - J_f z, M = G_o^-1.
+  Eigen::VectorXd s_res = r;
+  const CglsResult cg = preconditioned_cgls(
+      s.nf, [&](Eigen::VectorXd& g) { s.kept_transpose_times(J, s_res, g); },
+      [&](const Eigen::VectorXd& p, Eigen::VectorXd& q) {
+        s.kept_times(J, p, q);
+        return q.squaredNorm();
+      },
+      [&](double alpha, const Eigen::VectorXd& q) { s_res -= alpha * q; },
+      [&](const Eigen::VectorXd& g, Eigen::VectorXd& y) { y = s.llt.solve(g); }, relative_tolerance, max_iterations);
   StaleSolveResult out;
   out.dx = Eigen::VectorXd::Zero(s.n);
-  // CGLS on J_f z = r, residual s_res = r - J_f z carried explicitly, M = G_o^-1.
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(s.nf), s_res = r, g, y, p, q;
-  s.kept_transpose_times(J, s_res, g);
-  y = s.llt.solve(g);
-  double gamma = g.dot(y);
-  const double gamma0 = gamma;
-  if (gamma0 == 0.0) {
-    out.converged = true;  // r orthogonal to range(J_f): dx = 0
-    return out;
-  }
-  if (!(gamma0 > 0.0) || !std::isfinite(gamma0)) return out;
-  const double target = relative_tolerance * relative_tolerance * gamma0;
-  p = y;
-  while (out.iterations < max_iterations) {
-    s.kept_times(J, p, q);
-    const double qq = q.squaredNorm();
-    if (!(qq > 0.0) || !std::isfinite(qq)) break;
-    const double alpha = gamma / qq;
-    z += alpha * p;
-    s_res -= alpha * q;
-    s.kept_transpose_times(J, s_res, g);
-    y = s.llt.solve(g);
-    const double gamma_new = g.dot(y);
-    ++out.iterations;
-    out.relative_residual = std::sqrt(std::max(gamma_new, 0.0) / gamma0);
-    if (!std::isfinite(gamma_new)) break;
-    if (gamma_new <= target) {
-      out.converged = true;
-      break;
-    }
-    if (!(gamma_new > 0.0)) break;  // M lost definiteness in rounding: the caller refactorises
-    p = y + (gamma_new / gamma) * p;
-    gamma = gamma_new;
-  }
+  out.iterations = cg.iterations;
+  out.converged = cg.converged;
+  out.relative_residual = cg.relative_residual;
   if (out.converged)
-    for (int f = 0; f < s.nf; ++f) out.dx[s.kept[f]] = z[f];
+    for (int f = 0; f < s.nf; ++f) out.dx[s.kept[f]] = cg.x[f];
   return out;
 }
 

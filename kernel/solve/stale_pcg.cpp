@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kernel/solve/preconditioned_cgls.hpp"
+
 namespace rigidfold {
 
 namespace {
@@ -36,41 +38,24 @@ StalePcgResult stale_pcg_step(const MinimumNormSolver& factor, const Eigen::Vect
   if (!(std::abs(aw) >= 1e-8 * a.lpNorm<Eigen::Infinity>())) return out;  // M unusable: the caller refactorises
   // CGLS on A = [J; a^T], b = [r; c]; s = b - A dx split as (s_rows, s_last).
   Eigen::VectorXd s = r;
-  double s_last = c;
-  Eigen::VectorXd g = J.transpose() * s + s_last * a;
-  Eigen::VectorXd z = apply_preconditioner(factor, w_fac, a, aw, g);
-  double gamma = g.dot(z);
-  const double gamma0 = gamma;
-  if (gamma0 == 0.0) {
-    out.converged = true;  // b is orthogonal to range(A): dx = 0
-    return out;
-  }
-  if (!(gamma0 > 0.0) || !std::isfinite(gamma0)) return out;
-  const double target = options.relative_tolerance * options.relative_tolerance * gamma0;
-  Eigen::VectorXd p = z, q;
-  while (out.iterations < options.max_iterations) {
-    q = J * p;
-    const double q_last = a.dot(p);
-    const double qq = q.squaredNorm() + q_last * q_last;
-    if (!(qq > 0.0) || !std::isfinite(qq)) break;
-    const double alpha = gamma / qq;
-    out.dx += alpha * p;
-    s -= alpha * q;
-    s_last -= alpha * q_last;
-    g = J.transpose() * s + s_last * a;
-    z = apply_preconditioner(factor, w_fac, a, aw, g);
-    const double gamma_new = g.dot(z);
-    ++out.iterations;
-    out.relative_residual = std::sqrt(std::max(gamma_new, 0.0) / gamma0);
-    if (!std::isfinite(gamma_new)) break;
-    if (gamma_new <= target) {
-      out.converged = true;
-      break;
-    }
-    if (!(gamma_new > 0.0)) break;  // M lost definiteness (rounding): give up, the caller refactorises
-    p = z + (gamma_new / gamma) * p;
-    gamma = gamma_new;
-  }
+  double s_last = c, q_last = 0.0;  // q_last: the constraint row of the last A p
+  CglsResult cg = preconditioned_cgls(
+      n, [&](Eigen::VectorXd& g) { g = J.transpose() * s + s_last * a; },
+      [&](const Eigen::VectorXd& p, Eigen::VectorXd& q) {
+        q = J * p;
+        q_last = a.dot(p);
+        return q.squaredNorm() + q_last * q_last;
+      },
+      [&](double alpha, const Eigen::VectorXd& q) {
+        s -= alpha * q;
+        s_last -= alpha * q_last;
+      },
+      [&](const Eigen::VectorXd& g, Eigen::VectorXd& y) { y = apply_preconditioner(factor, w_fac, a, aw, g); },
+      options.relative_tolerance, options.max_iterations);
+  out.dx = std::move(cg.x);
+  out.iterations = cg.iterations;
+  out.converged = cg.converged;
+  out.relative_residual = cg.relative_residual;
   return out;
 }
 
