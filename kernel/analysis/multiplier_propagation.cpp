@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <deque>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -23,11 +22,24 @@ std::string letters_at(const CreasePattern& p, const std::array<int, 4>& creases
   return s;
 }
 
+// The model of a pattern that multiplier_model_applicable accepted (not checked again).
+MultiplierModel build_applicable_model(const CreasePattern& p, const Topology& t);
+
 // A candidate mode of one vertex and the vertex's sign: sigma * tau_v > 0 makes every
 // assigned crease fold its assigned way (sigma = 0: no assigned crease, either sign).
 struct Candidate {
   int mode = 0;
   int sigma = 0;
+};
+
+// The candidates of one vertex: at most its two modes, in the order they are tried.
+struct Candidates {
+  std::array<Candidate, 2> list{};
+  int count = 0;
+  void push_back(Candidate c) { list[count++] = c; }
+  int size() const { return count; }
+  bool empty() const { return count == 0; }
+  const Candidate& operator[](int i) const { return list[i]; }
 };
 
 // Union-find over model vertices with multiplicative potentials (pot[x] = tau_x / tau_parent)
@@ -135,7 +147,7 @@ std::vector<int> bfs_order(const MultiplierModel& m) {
   return order;
 }
 
-SearchResult search_modes(const MultiplierModel& m, const std::vector<std::vector<Candidate>>& candidates,
+SearchResult search_modes(const MultiplierModel& m, const std::vector<Candidates>& candidates,
                           double tol, long max_steps) {
   const int n = static_cast<int>(m.vertices.size());
   SearchResult out;
@@ -164,7 +176,7 @@ SearchResult search_modes(const MultiplierModel& m, const std::vector<std::vecto
       return out;
     }
     const int k = order[d];
-    if (choice[d] >= static_cast<int>(candidates[k].size())) {
+    if (choice[d] >= candidates[k].size()) {
       if (d == 0) {
         out.status = SearchResult::Status::kExhausted;
         return out;
@@ -249,12 +261,12 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
     out.reason = "multiplier model not applicable: " + out.applicability.reason;
     return out;
   }
-  const MultiplierModel model = build_multiplier_model(pattern, topology, opt.flat_tolerance);
+  const MultiplierModel model = build_applicable_model(pattern, topology);
   out.vertices = model.vertices;
   const int n = static_cast<int>(model.vertices.size());
 
   // Candidate modes per vertex.
-  std::vector<std::vector<Candidate>> candidates(n);
+  std::vector<Candidates> candidates(n);
   for (int k = 0; k < n; ++k) {
     for (int mode = 0; mode < 2; ++mode) {
       const auto& w = model.w[k][mode];
@@ -273,7 +285,7 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
         for (double x : model.w[k][mode]) z += x == 0.0;
         return z;
       };
-      if (zeros(1) < zeros(0)) std::swap(candidates[k][0], candidates[k][1]);
+      if (zeros(1) < zeros(0)) std::swap(candidates[k].list[0], candidates[k].list[1]);
     }
   }
   for (int k = 0; k < n; ++k) {
@@ -292,7 +304,7 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
     return out;
   }
 
-  const SearchResult found = search_modes(model, candidates, opt.gain_tolerance, opt.max_search_steps);
+  SearchResult found = search_modes(model, candidates, opt.gain_tolerance, opt.max_search_steps);
   out.search_steps = found.steps;
   if (found.status == SearchResult::Status::kBudget) {
     out.verdict = Verdict::kUndecided;
@@ -320,20 +332,20 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
     return out;
   }
 
-  out.modes = found.modes;
-  const ModeCheck mc = check_modes(model, out.modes, opt.gain_tolerance);
+  out.modes = std::move(found.modes);
+  ModeCheck mc = check_modes(model, out.modes, opt.gain_tolerance);
   out.max_loop_defect = mc.max_defect;
   out.cycles_checked = mc.cycles_checked;
   out.dof = mc.dof;
-  out.family = mc.family;
+  out.family = std::move(mc.family);
   if (mc.dof == 0) {
     out.verdict = Verdict::kNotRigidlyFoldable;
     out.reason = "no crease can fold";
     return out;
   }
   // Certificate: every component folded to certificate_fold, checked by face placement.
-  const std::vector<double> t = certificate_parameters(pattern, mc.family, opt.certificate_fold, use_assignment);
-  out.certificate_angles = mc.family.angles(t);
+  const std::vector<double> t = certificate_parameters(pattern, *out.family, opt.certificate_fold, use_assignment);
+  out.certificate_angles = out.family->angles(t);
   out.certificate_max_fold = out.certificate_angles.cwiseAbs().maxCoeff();
   const FoldedGeometry g =
       place_faces(pattern, topology, out.certificate_angles, reference_fold_angles(pattern, topology));
@@ -448,6 +460,12 @@ MultiplierApplicability multiplier_model_applicable(const CreasePattern& p, cons
 MultiplierModel build_multiplier_model(const CreasePattern& p, const Topology& t, double tol) {
   const MultiplierApplicability a = multiplier_model_applicable(p, t, tol);
   if (!a.applicable) throw std::invalid_argument("multiplier model: " + a.reason);
+  return build_applicable_model(p, t);
+}
+
+namespace {
+
+MultiplierModel build_applicable_model(const CreasePattern& p, const Topology& t) {
   MultiplierModel m;
   m.num_edges = p.num_edges();
   m.vertices = t.interior_vertices;
@@ -459,8 +477,7 @@ MultiplierModel build_multiplier_model(const CreasePattern& p, const Topology& t
   for (int k = 0; k < n; ++k) {
     const Fan& fan = t.stars[m.vertices[k]].fans[0];
     const std::array<double, 4> sectors{fan.sectors[0], fan.sectors[1], fan.sectors[2], fan.sectors[3]};
-    for (int mode = 0; mode < 2; ++mode)
-      m.w[k][mode] = flat_fold_multipliers(sectors, mode_from_index(mode), tol).direction;
+    m.w[k] = flat_fold_directions(sectors);  // indexed by mode_index
     for (int i = 0; i < 4; ++i) {
       const int e = fan.edges[i];
       m.creases[k][i] = e;
@@ -474,6 +491,8 @@ MultiplierModel build_multiplier_model(const CreasePattern& p, const Topology& t
     m.free_hinge[e] = t.edge_is_hinge[e] && is_foldable_crease(p.assignments[e]) && m.edge_vertex[e][0] < 0;
   return m;
 }
+
+}  // namespace
 
 Eigen::VectorXd FoldFamily::angles(const std::vector<double>& t) const {
   if (static_cast<int>(t.size()) != num_components)
@@ -521,15 +540,18 @@ ModeCheck check_modes(const MultiplierModel& m, const std::vector<FlatFoldMode>&
   out.vertex_component.assign(n, -1);
   std::vector<double> scale(n, 1.0);
   std::vector<int> parent(n, -1), parent_crease(n, -1), depth(n, 0);
-  // Spanning forest of the tie graph.
+  // Spanning forest of the tie graph, breadth first (`queue` holds every vertex reached; those
+  // from `head` on wait).
+  std::vector<int> queue;
+  queue.reserve(n);
   for (int root = 0; root < n; ++root) {
     if (out.vertex_component[root] >= 0) continue;
     const int c = out.tie_components++;
     out.vertex_component[root] = c;
-    std::deque<int> queue{root};
-    while (!queue.empty()) {
-      const int k = queue.front();
-      queue.pop_front();
+    std::size_t head = queue.size();
+    queue.push_back(root);
+    while (head < queue.size()) {
+      const int k = queue[head++];
       for (int i = 0; i < 4; ++i) {
         const int e = m.creases[k][i];
         const int side = m.edge_vertex[e][0] == k ? 1 : 0;

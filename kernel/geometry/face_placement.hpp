@@ -23,7 +23,8 @@ struct FoldedGeometry {
   std::vector<Eigen::Isometry3d> face_motions;  // reference -> folded, per face
   std::vector<Eigen::Vector3d> vertices;        // folded positions (from the first face placed that holds the vertex)
   // Closure mismatch: over non-tree hinges, the largest distance between where the two
-  // faces put the vertices of the child face (length units); and its hinge (-1 if none).
+  // faces put the vertices of the child face (length units; NaN if a fold angle is NaN); and
+  // its hinge (-1 if none).
   double max_mismatch = 0.0;
   int worst_edge = -1;
   int non_tree_hinges = 0;

@@ -10,6 +10,8 @@ Eigen::VectorXd reference_fold_angles(const CreasePattern& p, const Topology& t)
   Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
   for (int e = 0; e < p.num_edges(); ++e) {
     if (!t.edge_is_hinge[e]) continue;
+    // Equal normals (every hinge of a flat sheet): the atan2 below would give exactly 0.
+    if (t.face_normals[t.edge_faces[e][0]] == t.face_normals[t.edge_faces[e][1]]) continue;
     const Eigen::Vector3d d = (p.vertices[p.edges[e][1]] - p.vertices[p.edges[e][0]]).normalized();
     const Eigen::Vector3d& n_left = t.face_normals[t.edge_faces[e][0]];
     const Eigen::Vector3d& n_right = t.face_normals[t.edge_faces[e][1]];

@@ -28,12 +28,4 @@ std::optional<Assignment> assignment_from_letter(char c) {
   }
 }
 
-bool is_foldable_crease(Assignment a) {
-  return a == Assignment::Mountain || a == Assignment::Valley || a == Assignment::Unassigned;
-}
-
-int assigned_fold_sign(Assignment a) {
-  return a == Assignment::Mountain ? -1 : (a == Assignment::Valley ? 1 : 0);
-}
-
 }  // namespace rigidfold

@@ -14,10 +14,14 @@ char assignment_letter(Assignment a);
 // Returns nullopt for a letter FOLD does not define.
 std::optional<Assignment> assignment_from_letter(char c);
 // A crease that may fold (M, V, U). F and J are rigid joins, B and C are not joins.
-bool is_foldable_crease(Assignment a);
+inline bool is_foldable_crease(Assignment a) {
+  return a == Assignment::Mountain || a == Assignment::Valley || a == Assignment::Unassigned;
+}
 // A crease whose letter asks for a sign (M or V).
 inline bool has_fold_sign(Assignment a) { return a == Assignment::Mountain || a == Assignment::Valley; }
 // Sign a crease's letter asks of its fold angle: -1 M, +1 V, 0 for any other letter.
-int assigned_fold_sign(Assignment a);
+inline int assigned_fold_sign(Assignment a) {
+  return a == Assignment::Mountain ? -1 : (a == Assignment::Valley ? 1 : 0);
+}
 
 }  // namespace rigidfold

@@ -61,6 +61,11 @@ struct FlatFoldMultipliers {
   int odd_crease = -1;
 };
 
+// The directions w of both modes ([0] kEqual13, [1] kEqual02; each equal to
+// flat_fold_multipliers(sectors, mode).direction), for callers that have already validated the
+// sectors (validate_flat_foldable) and need nothing more: no check here.
+std::array<std::array<double, 4>, 2> flat_fold_directions(const std::array<double, 4>& sectors);
+
 // Inputs: sectors alpha_0..alpha_3 (radians), mode, tol for validate_flat_foldable.
 // Throws std::invalid_argument if the vertex is not flat-foldable.
 FlatFoldMultipliers flat_fold_multipliers(const std::array<double, 4>& sectors,

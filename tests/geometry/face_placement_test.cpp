@@ -80,6 +80,21 @@ TEST(FacePlacement, MismatchMeasuresTheClosureError) {
   EXPECT_GE(g.worst_edge, 0);
 }
 
+// A NaN fold angle must not pass for a closed fold: the mismatch is NaN, so no "<= tolerance"
+// check can accept it.
+TEST(FacePlacement, ANanFoldAngleGivesANanMismatch) {
+  const CreasePattern p = degree4_sheet();
+  const Topology t = build_topology(p);
+  for (int e = 0; e < 4; ++e) {
+    Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
+    rho[e] = std::nan("");
+    const FoldedGeometry g = place_faces(p, t, rho, Eigen::VectorXd::Zero(p.num_edges()));
+    EXPECT_TRUE(std::isnan(g.max_mismatch)) << "edge " << e;
+    EXPECT_FALSE(g.relative_mismatch() <= 1e-9);
+    EXPECT_GE(g.worst_edge, 0);
+  }
+}
+
 TEST(FoldCli, WritesFoldedFrameAndObjAndReportsMismatch) {
   const auto dir = std::filesystem::temp_directory_path() / ("rigidfold_foldcli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

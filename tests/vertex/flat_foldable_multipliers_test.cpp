@@ -150,6 +150,20 @@ TEST(MultiplierFlatFoldable, StepsAndProductsAreConsistent) {
   }
 }
 
+// The unchecked pair of directions the multiplier model uses is each mode's own direction, bit
+// for bit, including the degenerate vertices (d = 0, s = pi/2) where a pair stays flat.
+TEST(MultiplierFlatFoldable, BothDirectionsAtOnceMatchEachMode) {
+  std::mt19937_64 rng(409);
+  std::vector<std::array<double, 4>> vertices = sample_vertices(rng, 100);
+  vertices.push_back(flat_foldable(kPi / 3, kPi / 3));  // d = 0
+  vertices.push_back(flat_foldable(kPi / 3, kPi / 6));  // s = pi/2
+  for (const auto& a : vertices) {
+    const auto both = flat_fold_directions(a);
+    EXPECT_EQ(both[0], flat_fold_multipliers(a, FlatFoldMode::kEqual13, 1e-6).direction);
+    EXPECT_EQ(both[1], flat_fold_multipliers(a, FlatFoldMode::kEqual02, 1e-6).direction);
+  }
+}
+
 TEST(MultiplierFlatFoldable, MiuraVertex) {
   // Acute sectors 0 and 1 around crease 1; creases 1 and 3 collinear, 0 and 2 the zig-zag.
   const double a = 1.0;
