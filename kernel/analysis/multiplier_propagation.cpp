@@ -268,15 +268,16 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
   // Candidate modes per vertex.
   std::vector<Candidates> candidates(n);
   for (int k = 0; k < n; ++k) {
+    std::array<Assignment, 4> letters;
+    if (use_assignment)
+      for (int i = 0; i < 4; ++i) letters[i] = pattern.assignments[model.creases[k][i]];
     for (int mode = 0; mode < 2; ++mode) {
-      const auto& w = model.w[k][mode];
       if (!use_assignment) {
         candidates[k].push_back({mode, 0});
         continue;
       }
-      std::array<Assignment, 4> letters;
-      for (int i = 0; i < 4; ++i) letters[i] = pattern.assignments[model.creases[k][i]];
-      if (const auto sigma = mode_sign_matching_letters(w, letters)) candidates[k].push_back({mode, *sigma});
+      if (const auto sigma = mode_sign_matching_letters(model.w[k][mode], letters))
+        candidates[k].push_back({mode, *sigma});
     }
     if (!use_assignment) {
       // Modes in which every crease folds first.
