@@ -573,7 +573,8 @@ GeneralVerdict general_verdict(const CreasePattern& pattern, const Topology& top
       if (trial.trace.valid_points > 0) {
         trial.certificate_angles = trial.trace.path[trial.trace.valid_points - 1];
         trial.certificate_mismatch =
-            place_faces(pattern, topology, trial.certificate_angles, reference_fold_angles(pattern, topology))
+            place_faces(pattern, topology, trial.certificate_angles, reference_fold_angles(pattern, topology),
+                        /*with_vertices=*/false)
                 .relative_mismatch();
       }
       if (!trial.trace.path.empty()) {

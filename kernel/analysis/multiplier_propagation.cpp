@@ -349,7 +349,8 @@ FoldabilityVerdict decide(const CreasePattern& pattern, const Topology& topology
   out.certificate_angles = out.family->angles(t);
   out.certificate_max_fold = out.certificate_angles.cwiseAbs().maxCoeff();
   const FoldedGeometry g =
-      place_faces(pattern, topology, out.certificate_angles, reference_fold_angles(pattern, topology));
+      place_faces(pattern, topology, out.certificate_angles, reference_fold_angles(pattern, topology),
+                  /*with_vertices=*/false);
   out.certificate_mismatch = g.relative_mismatch();
   int wrong_sign = -1;
   if (use_assignment)

@@ -20,7 +20,7 @@ Eigen::Isometry3d hinge_motion(const CreasePattern& p, int e, int side, double a
 }
 
 FoldedGeometry place_faces(const CreasePattern& p, const Topology& t, const Eigen::VectorXd& rho,
-                           const Eigen::VectorXd& rho_ref) {
+                           const Eigen::VectorXd& rho_ref, bool with_vertices) {
   const int nf = p.num_faces();
   FoldedGeometry g;
   g.face_motions.assign(nf, Eigen::Isometry3d::Identity());
@@ -91,6 +91,7 @@ FoldedGeometry place_faces(const CreasePattern& p, const Topology& t, const Eige
     }
   }
   g.max_mismatch = std::sqrt(max_mismatch2);  // the largest distance: sqrt is monotone and correctly rounded
+  if (!with_vertices) return g;
   g.vertices = p.vertices;
   std::vector<char> done(p.num_vertices(), 0);
   for (int f : order)

@@ -36,7 +36,9 @@ struct FoldedGeometry {
 // (radians) about the crease line, with the FOLD sign: valley > 0 lifts the left face.
 Eigen::Isometry3d hinge_motion(const CreasePattern& pattern, int edge, int side, double angle);
 
+// with_vertices = false leaves `vertices` empty (for callers that only need the motions and
+// the mismatch, such as a certificate check).
 FoldedGeometry place_faces(const CreasePattern& pattern, const Topology& topology, const Eigen::VectorXd& fold_angles,
-                           const Eigen::VectorXd& reference_angles);
+                           const Eigen::VectorXd& reference_angles, bool with_vertices = true);
 
 }  // namespace rigidfold

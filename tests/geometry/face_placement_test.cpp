@@ -80,6 +80,25 @@ TEST(FacePlacement, MismatchMeasuresTheClosureError) {
   EXPECT_GE(g.worst_edge, 0);
 }
 
+// Without vertices the motions and the mismatch are the same as with them.
+TEST(FacePlacement, WithoutVerticesKeepsTheMotionsAndTheMismatch) {
+  const CreasePattern p = degree4_sheet();
+  const Topology t = build_topology(p);
+  Eigen::VectorXd rho = Eigen::VectorXd::Zero(p.num_edges());
+  rho[0] = 0.5;
+  rho[1] = -0.3;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.num_edges());
+  const FoldedGeometry full = place_faces(p, t, rho, zero);
+  const FoldedGeometry lean = place_faces(p, t, rho, zero, /*with_vertices=*/false);
+  EXPECT_TRUE(lean.vertices.empty());
+  EXPECT_EQ(full.vertices.size(), p.vertices.size());
+  EXPECT_EQ(lean.max_mismatch, full.max_mismatch);
+  EXPECT_EQ(lean.worst_edge, full.worst_edge);
+  ASSERT_EQ(lean.face_motions.size(), full.face_motions.size());
+  for (std::size_t f = 0; f < full.face_motions.size(); ++f)
+    EXPECT_TRUE(lean.face_motions[f].matrix() == full.face_motions[f].matrix()) << "face " << f;
+}
+
 // A NaN fold angle must not pass for a closed fold: the mismatch is NaN, so no "<= tolerance"
 // check can accept it.
 TEST(FacePlacement, ANanFoldAngleGivesANanMismatch) {
