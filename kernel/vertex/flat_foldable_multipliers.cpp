@@ -41,15 +41,8 @@ std::array<double, 4> mode_direction(const std::array<double, 4>& sectors, FlatF
 }  // namespace
 
 std::array<std::array<double, 4>, 2> flat_fold_directions(const std::array<double, 4>& sectors) {
-  // mode_direction for both modes, with each of sin and cos of d and s taken once.
-  const double d = 0.5 * (sectors[1] - sectors[0]);
-  const double s = 0.5 * (sectors[1] + sectors[0]);
-  const double sin_d = std::sin(d), cos_d = std::cos(d), sin_s = std::sin(s), cos_s = std::cos(s);
-  std::array<std::array<double, 4>, 2> w{{{sin_d, -sin_s, -sin_d, -sin_s}, {cos_d, -cos_s, cos_d, cos_s}}};
-  for (auto& mode : w)
-    for (double& x : mode)
-      if (std::abs(x) < kZeroDirection) x = 0.0;
-  return w;
+  // Both calls inline here, so the compiler pairs sin and cos of d and of s (sincos).
+  return {mode_direction(sectors, FlatFoldMode::kEqual13), mode_direction(sectors, FlatFoldMode::kEqual02)};
 }
 
 const char* to_string(FlatFoldMode mode) {
