@@ -7,7 +7,6 @@
 //                       process for a per-benchmark figure: scripts/bench_report.sh does)
 // Sizes: Miura-ori n x n cells, about 2 n^2 creases; see register_all() at the end.
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "benchmarks/miura_case.hpp"
 #include "data/generators/graded_miura.hpp"
 #include "data/generators/miura.hpp"
 #include "data/generators/square_twist_tessellation.hpp"
@@ -35,43 +35,8 @@
 namespace rigidfold {
 namespace {
 
-
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // kilobytes on Linux
-}
-
-// One Miura-ori instance with its closed-form state at rho_s = 1.2 and a perturbed start.
-struct MiuraCase {
-  generators::MiuraParams params;
-  CreasePattern pattern;
-  Topology topology;
-  ClosureSystem system;
-  Eigen::VectorXd exact, start;
-  explicit MiuraCase(int n)
-      : params(make_params(n)),
-        pattern(generators::miura_ori(params)),
-        topology(build_topology(pattern)),
-        system(pattern, topology),
-        exact(closed_form(1.2)) {
-    std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> noise(-1e-4, 1e-4);
-    start = exact;
-    for (int k = 1; k < start.size(); ++k) start[k] += noise(rng);  // unknown 0 is held
-  }
-  static generators::MiuraParams make_params(int n) {
-    generators::MiuraParams m;
-    m.rows = m.cols = n;
-    m.alpha = kPi / 3;
-    return m;
-  }
-  Eigen::VectorXd closed_form(double rho_s) const {
-    return system.unknowns_from_edges(fold_angle_vector(generators::miura_fold_angles(pattern, params, rho_s)));
-  }
-  // Unknown of a straight crease (the trace's driver): edge (0, 1).
-  int driver() const { return system.unknown_of_edge(params.cols + 0); }
-};
+using bench::MiuraCase;
+using bench::peak_rss_mb;
 
 void finish(benchmark::State& state, const CreasePattern& p) {
   state.counters["edges"] = p.num_edges();

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Benchmark report for large tessellations (issue 5): builds Release, runs every benchmark
 # of benchmarks/scaling_bench (one process per benchmark, so that each peak-memory figure
-# is its own), plus verdict_bench, and writes out/bench/BENCH.md with tables and plots
-# (python/plot_bench.py, matplotlib from Debian).
+# is its own), plus verdict_bench and amg_bench (where hypre is found), and writes
+# out/bench/BENCH.md with tables and plots (python/plot_bench.py, matplotlib from Debian).
 #   bash scripts/bench_report.sh             quick set, Miura up to 200 x 200 cells (80k creases;
 #                                            about 1.5 minutes of runs on 2 cores, plus the build)
 #   bash scripts/bench_report.sh --large     adds 160 and 320 x 320 cells (205k creases), traces
@@ -24,6 +24,12 @@ esac
 bash scripts/bootstrap.sh
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)" --target scaling_bench verdict_bench
+# amg_bench exists where hypre and MPI were found (benchmarks/CMakeLists.txt).
+amg=""
+if cmake --build "$build" --target help | grep -c '\bamg_bench\b' >/dev/null; then  # -c reads it all (pipefail)
+  cmake --build "$build" -j"$(nproc)" --target amg_bench
+  amg="$build/benchmarks/amg_bench"
+fi
 mkdir -p "$out/runs"
 rm -f "$out"/runs/*.json
 bench="$build/benchmarks/scaling_bench"
@@ -37,11 +43,15 @@ while IFS= read -r name; do
 done < <("$bench" --benchmark_list_tests=true)
 "$build/benchmarks/verdict_bench" --benchmark_format=json --benchmark_out_format=json \
   --benchmark_out="$out/runs/verdict.json" >/dev/null
+if [ -n "$amg" ]; then
+  "$amg" --benchmark_format=json --benchmark_out_format=json --benchmark_out="$out/runs/amg.json" >/dev/null
+  echo "bench: amg_bench ($SECONDS s)"
+fi
 /usr/bin/python3 - "$out" <<'PY'
 import glob, json, sys
 out = sys.argv[1]
 merged = None
-for path in sorted(glob.glob(f"{out}/runs/*.json")):  # scaling_bench runs, then verdict.json
+for path in sorted(glob.glob(f"{out}/runs/*.json")):  # scaling_bench runs, amg.json, verdict.json
     with open(path) as f:
         d = json.load(f)
     if merged is None:
