@@ -36,6 +36,18 @@ constexpr int kRankRevealingLimit = 2000;
 constexpr int kPcgUnknowns = kRankRevealingLimit + 1;
 constexpr int kAutoPcgWindow = 6;
 
+// CHOLMOD's supernodal switch for the trace's factor (MinimumNormSolver's argument): a trace
+// solves with each factor 15-20 times (PCG iterations, null vectors, tangents), against a few
+// times in one corrector, so the supernodal factor's slower triangular solves weigh more here
+// than in kSupernodalFlopsPerEntry's measurements. Measured on BM_Trace/n/3 (104 points, the
+// default linear solver; one run each, 2-core machine, nothing else running), seconds in total
+// (factorise / PCG):
+//   cells   flops/nnz(L)   simplicial            supernodal
+//   320         128         88.6 (31.8 / 37.2)    96.9 (20.1 / 51.8)
+//   500         187        305   (123 / 127)     268   (51.2 / 152)
+// The crossover, interpolated between the two: ~150. Below 120 both switches pick simplicial.
+constexpr double kTraceSupernodalFlopsPerEntry = 150.0;
+
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -52,7 +64,10 @@ class Linear {
  public:
   Linear(const ClosureSystem& system, const Eigen::SparseMatrix<double>& pattern, double lambda_relative,
          ContinuationStats& stats)
-      : system_(system), solver_(pattern), lambda_relative_(lambda_relative), stats_(stats) {}
+      : system_(system),
+        solver_(pattern, {}, FactorOrdering::kDefault, kTraceSupernodalFlopsPerEntry),
+        lambda_relative_(lambda_relative),
+        stats_(stats) {}
 
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::SparseMatrix<double>& J) {
     const auto t0 = Clock::now();
