@@ -3,8 +3,9 @@
 # Idempotent and quiet: prints one line per action, nothing when all is present.
 set -euo pipefail
 
-# libhypre-dev, libopenmpi-dev: only for benchmarks/amg_bench (hypre's BoomerAMG against CHOLMOD on
-# the corrector's system; hypre needs MPI even on one process).
+# libhypre-dev, libopenmpi-dev, openmpi-bin: only for benchmarks/amg_bench (hypre's BoomerAMG against CHOLMOD on
+# the corrector's system; hypre needs MPI even on one process, and Open MPI's MPI_Init without mpirun
+# starts its orted, from openmpi-bin).
 # libopenblas0-pthread: Debian's alternatives then serve OpenBLAS (threaded) as libblas.so.3 and
 # liblapack.so.3; CHOLMOD's supernodal factorisation of large systems runs on it (at 2M unknowns
 # 2.0 s, against 4.7 s on ATLAS and 9.1 s for the simplicial factor: kernel/solve/newton_projection.hpp).
@@ -14,7 +15,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-matplotlib python3-numpy python3-scipy python3-pytest
   libboost-dev libfcl-dev libspectra-dev libexpat1-dev clang libclang-rt-14-dev
-  libopenblas0-pthread libhypre-dev libopenmpi-dev
+  libopenblas0-pthread libhypre-dev libopenmpi-dev openmpi-bin
 )
 
 bash "$(dirname "$0")/install_missing_packages.sh" bootstrap "${packages[@]}"
