@@ -20,7 +20,8 @@
 // Counters: pcg_iterations, s_setup / s_solve (AMG setup, PCG solve; the rest of the time is
 // forming and copying G), relative_residual (hypre's), step_difference (||dx - dx_cholmod||_inf
 // / ||dx_cholmod||_inf: the AMG step against the direct one, a cross-check of both),
-// linear_residual (||J_f dx - r||_inf, as BM_Factorize reports it), edges, peak_rss_mb.
+// linear_residual (||J_f dx - r||_inf, as BM_Factorize reports it), edges, peak_rss_mb (of the
+// whole process so far: bench_report.sh runs amg_bench as one process).
 // Built only where hypre and MPI are found (benchmarks/CMakeLists.txt); hypre needs MPI
 // initialised even on one process, hence the main() below.
 #include <HYPRE.h>
