@@ -157,7 +157,7 @@ TEST(CheckedNumbersCli, NonFiniteAndOutOfRangeFlagsExitTwoNamingTheFlag) {
     EXPECT_NE(r.err.find(c.flag), std::string::npos) << c.args << ": " << r.err;
   }
   // The ends of the closed ranges are accepted.
-  for (const std::string ok : {"info " + square + " --tolerance-deg 1e-9", "info " + square + " --tolerance-deg 10",
+  for (const std::string& ok : {"info " + square + " --tolerance-deg 1e-9", "info " + square + " --tolerance-deg 10",
                                std::string("vertex miura --alpha1 1e-300 --alpha2 89.999999999999 --theta 0"),
                                std::string("vertex s4r --twists -360,360,90,90 --input -180")})
     EXPECT_EQ(test::run_command(test::cli() + " " + ok).status, 0) << ok;

@@ -53,9 +53,11 @@ TEST(EnergyStiffnessCli, EqualStiffnessScalesTheEnergyOnly) {
     const auto& a = one["stable_states"][i];
     const auto& b = five["stable_states"][i];
     EXPECT_NEAR(b["energy"].get<double>(), 5 * a["energy"].get<double>(), 1e-9 * std::max(1.0, b["energy"].get<double>()));
-    for (std::size_t e = 0; e < a["fold_angles_deg"].size(); ++e)
-      if (!a["fold_angles_deg"][e].is_null())
+    for (std::size_t e = 0; e < a["fold_angles_deg"].size(); ++e) {
+      if (!a["fold_angles_deg"][e].is_null()) {
         EXPECT_NEAR(b["fold_angles_deg"][e].get<double>(), a["fold_angles_deg"][e].get<double>(), 1e-7) << i << " " << e;
+      }
+    }
   }
   fs::remove_all(dir);
 }

@@ -102,7 +102,7 @@ TEST_F(ImportCli, BadSvgExitsTwoNamingTheElement) {
   const std::string curve = file("curve.svg",
                                  "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<rect width=\"10\" height=\"10\" stroke=\"#000\"/>\n"
                                  "<path stroke=\"red\" d=\"M0 0 Q 5 5 10 10\"/>\n</svg>");
-  for (const std::string cmd : {" import " + curve + " --out " + file("x.fold"), " info " + curve, " check " + curve, " trace " + curve}) {
+  for (const std::string& cmd : {" import " + curve + " --out " + file("x.fold"), " info " + curve, " check " + curve, " trace " + curve}) {
     const auto r = test::run_command(test::cli() + cmd);
     EXPECT_EQ(r.status, 2) << cmd << ": " << r.err;
     EXPECT_NE(r.err.find("curve.svg: <path> #1 (line 3) d:"), std::string::npos) << r.err;

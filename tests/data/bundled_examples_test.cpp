@@ -71,8 +71,11 @@ TEST(GeneratorCli, WritesEveryKindAndBundle) {
   int creases_with_angle = 0;
   for (int e = 0; e < folded.num_edges(); ++e) {
     const bool crease = folded.assignments[e] == Assignment::Mountain || folded.assignments[e] == Assignment::Valley;
-    if (crease) creases_with_angle += folded.fold_angles[e].has_value() && *folded.fold_angles[e] != 0.0;
-    else if (folded.fold_angles[e]) EXPECT_EQ(*folded.fold_angles[e], 0.0) << "edge " << e;
+    if (crease) {
+      creases_with_angle += folded.fold_angles[e].has_value() && *folded.fold_angles[e] != 0.0;
+    } else if (folded.fold_angles[e]) {
+      EXPECT_EQ(*folded.fold_angles[e], 0.0) << "edge " << e;
+    }
   }
   EXPECT_EQ(creases_with_angle, 4);
 

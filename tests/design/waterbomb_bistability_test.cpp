@@ -60,7 +60,9 @@ TEST(WaterbombBistability, EqualStiffnessEquilibriaIndependentOfK) {
     ASSERT_EQ(a.size(), 2u);
     for (std::size_t i = 0; i < a.size(); ++i) {
       EXPECT_NEAR(a[i].path.theta, b[i].path.theta, 1e-12) << n;
-      if (a[i].path.energy > 0) EXPECT_NEAR(b[i].path.energy / a[i].path.energy, 0.00455, 1e-9 * 0.00455);
+      if (a[i].path.energy > 0) {
+        EXPECT_NEAR(b[i].path.energy / a[i].path.energy, 0.00455, 1e-9 * 0.00455);
+      }
     }
     // Unequal stiffnesses do move state 2 (the claim is about equal k only).
     const auto c = waterbomb::waterbomb_bistability(n, to_radians(55.0), 2.0, 1.0).stable_states();

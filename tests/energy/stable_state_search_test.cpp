@@ -45,7 +45,9 @@ TEST(StableStateSearch, FindsTheWaterbombsTwoStatesWithoutKnowingItIsAWaterbomb)
       else EXPECT_FALSE(f.creases_against_letters.empty() && f.interfering_faces.empty());
     }
     ASSERT_GE(physical.size(), 2u) << "n = " << n;
-    if (n == 4) EXPECT_EQ(physical.size(), 2u);
+    if (n == 4) {
+      EXPECT_EQ(physical.size(), 2u);
+    }
     for (std::size_t i = 2; i < physical.size(); ++i) {
       EXPECT_GT(physical[i]->state.energy, expected[1].path.energy + 1e-6);
       double lo = 10, hi = -10;  // mountain angles of an unsymmetric state differ

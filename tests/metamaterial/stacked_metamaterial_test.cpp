@@ -78,9 +78,11 @@ TEST(StackedMetamaterial, LayerSheetsAreFlatFoldableWithUnitCreases) {
       const auto rho = generators::stacked_layer_fold_angles(params(m), false, tt);
       const Eigen::VectorXd x = sys.unknowns_from_edges(Eigen::Map<const Eigen::VectorXd>(rho.data(), rho.size()));
       EXPECT_LE(sys.residual(x).lpNorm<Eigen::Infinity>(), 1e-12) << m << " " << tt;
-      for (int e = 0; e < p.num_edges(); ++e)
-        if (p.assignments[e] != Assignment::Boundary)
+      for (int e = 0; e < p.num_edges(); ++e) {
+        if (p.assignments[e] != Assignment::Boundary) {
           EXPECT_EQ(rho[e] > 0, p.assignments[e] == Assignment::Valley) << m << " edge " << e;
+        }
+      }
     }
   }
   auto bad = [](StackedMetamaterialParams p, const char* place) {

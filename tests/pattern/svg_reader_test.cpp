@@ -130,9 +130,15 @@ TEST(SvgCorpusAgainstFold, OpacityIsTheTargetFoldAngle) {
   // waterbombBase.svg: red diagonals at full opacity, blue midlines at opacity 0.5.
   const CreasePattern p = read_svg(corpus("origami-simulator/waterbombBase.svg"));
   for (int e = 0; e < p.num_edges(); ++e) {
-    if (p.assignments[e] == Assignment::Mountain) EXPECT_DOUBLE_EQ(*p.fold_angles[e], -std::numbers::pi);
-    if (p.assignments[e] == Assignment::Valley) EXPECT_DOUBLE_EQ(*p.fold_angles[e], std::numbers::pi / 2);
-    if (p.assignments[e] == Assignment::Boundary) EXPECT_FALSE(p.fold_angles[e].has_value());
+    if (p.assignments[e] == Assignment::Mountain) {
+      EXPECT_DOUBLE_EQ(*p.fold_angles[e], -std::numbers::pi);
+    }
+    if (p.assignments[e] == Assignment::Valley) {
+      EXPECT_DOUBLE_EQ(*p.fold_angles[e], std::numbers::pi / 2);
+    }
+    if (p.assignments[e] == Assignment::Boundary) {
+      EXPECT_FALSE(p.fold_angles[e].has_value());
+    }
   }
 }
 

@@ -110,7 +110,9 @@ TEST(NormContinuation, KeepsEveryLetterByItsMarginOnTheWaterbombBase) {
         });
     EXPECT_GE(points, 5) << target;
     EXPECT_GE(least_ratio, 1.0 - 1e-9) << target;
-    if (target < 1) EXPECT_TRUE(res.reached) << res.reason;
+    if (target < 1) {
+      EXPECT_TRUE(res.reached) << res.reason;
+    }
     std::cout << "[ norm-cont ] waterbomb base to size " << target << ": " << points << " points, " << res.reason
               << ", least letter margin ratio " << least_ratio << "\n";
   }

@@ -118,7 +118,9 @@ TEST(ThickSlabInterference, TwoSlabsHingedOnTopOverlapOnlyWhenTheyFoldAsAMountai
     const double rho = drives[k];
     const double depth = rho < 0 ? std::min(t, 1.0) * std::sin(-rho) : 0.0;  // a lower bound of the overlap's depth
     const bool expected = rho < 0 && rho > -kPi;
-    if (expected) ASSERT_GT(depth, 10 * margin);
+    if (expected) {
+      ASSERT_GT(depth, 10 * margin);
+    }
     EXPECT_EQ(!in.states[k].collisions.empty(), expected) << "rho " << rho * 180 / kPi << " deg";
     if (!in.states[k].collisions.empty()) {
       EXPECT_EQ(in.states[k].collisions[0].face_a, 0);
