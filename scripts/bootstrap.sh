@@ -3,9 +3,9 @@
 # Idempotent and quiet: prints one line per action, nothing when all is present.
 set -euo pipefail
 
-# libhypre-dev, libopenmpi-dev, openmpi-bin: only for benchmarks/amg_bench (hypre's BoomerAMG against CHOLMOD on
-# the corrector's system; hypre needs MPI even on one process, and Open MPI's MPI_Init without mpirun
-# starts its orted, from openmpi-bin).
+# libhypre-dev, libopenmpi-dev, openmpi-bin: only for benchmarks/amg_bench (hypre's BoomerAMG
+# against CHOLMOD on the corrector's system; hypre needs MPI even on one process, and Open MPI's
+# MPI_Init without mpirun starts its orted, from openmpi-bin).
 # libopenblas0-pthread: Debian's alternatives then serve OpenBLAS (threaded) as libblas.so.3 and
 # liblapack.so.3; CHOLMOD's supernodal factorisation of large systems runs on it (at 2M unknowns
 # 2.0 s, against 4.7 s on ATLAS and 9.1 s for the simplicial factor: kernel/solve/newton_projection.hpp).
