@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "benchmarks/miura_case.hpp"
+#include "benchmarks/peak_memory.hpp"
 #include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold {

@@ -2,8 +2,6 @@
 // The Miura-ori instance the scaling benchmarks share (scaling_bench, amg_bench): n x n cells,
 // sector angle pi/3, its closed-form state at rho_s = 1.2 (radians) and a start perturbed by
 // uniform noise of 1e-4 rad on every unknown but unknown 0 (the one the correctors hold).
-#include <sys/resource.h>
-
 #include <Eigen/Core>
 #include <random>
 
@@ -14,13 +12,6 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::bench {
-
-// getrusage's peak resident memory of this process so far, in MiB.
-inline double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // kilobytes on Linux
-}
 
 struct MiuraCase {
   generators::MiuraParams params;

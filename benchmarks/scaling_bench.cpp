@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "benchmarks/miura_case.hpp"
+#include "benchmarks/peak_memory.hpp"
 #include "data/generators/graded_miura.hpp"
 #include "data/generators/miura.hpp"
 #include "data/generators/square_twist_tessellation.hpp"
