@@ -277,6 +277,10 @@ def general_cases_section(fams):
 AMG_STRENGTH = {0: "hypre's default (classical, 0.25)", 1: "abs(g_ij), 0.5", 2: "abs(g_ij), 0.8", 3: "abs(g_ij), 0.9"}
 
 
+def amg_setting(run):
+    return AMG_STRENGTH.get(int(run.get("strength", -1)), "?")
+
+
 def amg_section(fams):
     """benchmarks/amg_bench: hypre BoomerAMG-preconditioned CG against CHOLMOD's direct step on
     the corrector's system G dx = J_f^T r (issue 11 named AMG as one iterative route)."""
@@ -298,7 +302,7 @@ def amg_section(fams):
         if d is None or "pcg_iterations" not in r or r.get("error_occurred") or d.get("error_occurred"):
             continue
         ta, td = seconds(r)[0], seconds(d)[0]
-        out.append(f"| {cells(r)} | {int(r['edges'])} | {td:.3g} | {AMG_STRENGTH.get(int(r.get('strength', -1)), '?')} | "
+        out.append(f"| {cells(r)} | {int(r['edges'])} | {td:.3g} | {amg_setting(r)} | "
                    f"{r['pcg_iterations']:.0f} | {r.get('s_setup', 0):.3g} | {r.get('s_solve', 0):.3g} | {ta:.3g} | "
                    f"{ta / td:.1f}x | {fmt(r.get('step_difference'))} |")
         e = r["edges"]
@@ -310,7 +314,7 @@ def amg_section(fams):
         ratio = seconds(r)[0] / seconds(d)[0]
         its = [best[k]["pcg_iterations"] for k in sorted(best)]
         out += ["", f"At the largest size ({cells(r)} x {cells(r)}, {int(e)} creases) the best AMG setting "
-                f"({AMG_STRENGTH.get(int(r.get('strength', -1)), '?')}) takes {seconds(r)[0]:.3g} s and "
+                f"({amg_setting(r)}) takes {seconds(r)[0]:.3g} s and "
                 f"{r['pcg_iterations']:.0f} iterations against CHOLMOD's {seconds(d)[0]:.3g} s: "
                 + (f"{ratio:.1f}x slower." if ratio >= 1 else f"{1 / ratio:.1f}x faster.")
                 + f" Best-setting iterations by size: {', '.join(f'{i:.0f}' for i in its)}."]
