@@ -24,8 +24,8 @@ void print_text(const std::string& file, const FoldabilityReport& r) {
   std::cout << file << ": " << to_string(r.verdict) << " (model: " << r.model_name << ")\n";
   std::cout << "  " << r.reason << "\n";
   std::cout << "  precision: " << r.coordinate_precision << "\n";
-  if (r.foldable()) {
-    std::cout << "  DOF " << r.dof << ", max closure residual along the branch " << r.max_residual << " rad";
+  if (r.foldable() || r.folds_in_part) {
+    std::cout << "  " << (r.folds_in_part ? "the motion found: " : "") << "DOF " << r.dof << ", max closure residual along the branch " << r.max_residual << " rad";
     if (r.certificate_mismatch) std::cout << ", certificate mismatch " << *r.certificate_mismatch;
     std::cout << "\n";
     if (r.strictness) std::cout << "  strict: " << strict_verdict(*r.strictness) << "\n";

@@ -38,6 +38,7 @@
 #include "kernel/energy/load_spec.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/pattern/input_error.hpp"
+#include "kernel/pattern/length_scale.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -107,14 +108,17 @@ void add_energy_command(CLI::App& app) {
     if (problem.load) {
       const VertexHeightLoad& load = *problem.load;
       loaded["vertex"] = load.vertex;
-      loaded["height"] = load.height;
+      // Lengths and forces back in the file's units (the kernel's are normalised by
+      // 2^length_exponent; a force is energy per length).
+      loaded["height"] = to_file_units(p, load.height);
       loaded["supports"] = load.support_edges;
       nlohmann::ordered_json list = nlohmann::ordered_json::array();
       for (const auto& eq : found.loaded) {
         nlohmann::ordered_json e;
         e["energy"] = eq.energy;
-        e["force"] = eq.force;
+        e["force"] = std::ldexp(eq.force, -p.length_exponent);
         std::vector<double> reactions(eq.support_reactions.data(), eq.support_reactions.data() + eq.support_reactions.size());
+        for (double& r : reactions) r = std::ldexp(r, -p.length_exponent);
         e["support_reactions"] = reactions;
         e["constraint_residual"] = eq.constraint_residual;
         e["stationarity_residual"] = eq.stationarity_residual;

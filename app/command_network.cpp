@@ -79,6 +79,7 @@ void add_network_command(CLI::App& app) {
     const NetworkClosure system(spec.network);
     const LinkageNetwork& net = system.network();
     OutputSet outputs;
+    outputs.add_input("NETWORK", a->path);
     if (!a->out.empty()) {
       outputs.add_output("--out", a->out);
       // The layout's conditions, before anything is solved: at the flat state (q = 0) only

@@ -3,7 +3,7 @@
 // Traces a folding motion of a pattern, driven by one crease, at N equally spaced driving
 // angles (to*k/N, k = 1..N; the flat state is the key frame, not a step).
 //
-// Model (DESIGN.md, "Model only what a scene needs"):
+// Model (docs/DESIGN.md, "Model only what a scene needs"):
 //   - multiplier propagation when it applies and the verdict is foldable: the motion is the
 //     fold family tan(rho_e/2) = m_e * t_c, one branch per family component c (exact);
 //   - otherwise (or with --general) the general loop-closure solver: a start by Newton

@@ -1,6 +1,6 @@
 // rigidfold waterbomb --sweep-n A..B [--sweep-split-deg B1,B2] [--sweep-k-ratio R1,R2] --theta0-deg T [--json] [--plot DIR]
 //   a design sweep (design/waterbomb/waterbomb_sweep.hpp): the CSV table on stdout (or JSON),
-//   with --plot DIR also DIR/sweep.csv and DIR/sweep.png.
+//   with --plot DIR also DIR/sweep.csv (python/plot_waterbomb.py --sweep draws it).
 // rigidfold waterbomb --n N [--split-deg B] --theta0-deg T [--k-ratio R | --k-m K --k-v K] [--json]
 //                    [--curve FILE.csv] [--plot DIR] [--samples K] [--target-switching-force F]
 // Bistability of the symmetric waterbomb base (seed 004): every equilibrium of the spring
@@ -24,15 +24,11 @@
 // second stable state lies at T2 (design/waterbomb/waterbomb_rest_design.hpp), then the whole
 // analysis at that theta0; the design is printed only when a checked stable state lies within
 // 1e-9 rad of T2 (exit 3 otherwise).
-// --plot DIR: DIR/waterbomb.csv (the --curve table), DIR/waterbomb.json (the --json document)
-// and DIR/waterbomb.png (energy and force against apex height, drawn by /usr/bin/python3
-// python/plot_waterbomb.py in a private temporary directory); all three staged with the other
-// outputs, so a failed command writes none of them.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
+// --plot DIR: DIR/waterbomb.csv (the --curve table) and DIR/waterbomb.json (the --json
+// document), the data of the energy and force figure; both staged with the other outputs, so a
+// failed command writes neither. The binary starts no process: the figure is drawn from them by
+// `python3 python/plot_waterbomb.py DIR/waterbomb.csv DIR/waterbomb.json --out F.png`, as the
+// main job does.
 
 #include <cerrno>
 #include <cmath>
@@ -82,77 +78,6 @@ std::string curve_csv(const std::vector<waterbomb::CurveSample>& samples) {
   return csv;
 }
 
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// python/plot_waterbomb.py of this source tree (the build records the tree's absolute path
-// in __FILE__).
-std::string plot_script() {
-  std::string here = __FILE__;
-  const std::string tail = "app/command_waterbomb.cpp";
-  if (here.size() < tail.size() || here.compare(here.size() - tail.size(), tail.size(), tail) != 0)
-    throw std::runtime_error("--plot: cannot locate python/plot_waterbomb.py (this binary was built from " + here + ")");
-  std::string script = here.substr(0, here.size() - tail.size());
-  script += "python/plot_waterbomb.py";
-  if (::access(script.c_str(), R_OK) != 0) throw std::runtime_error("--plot: " + script + " is not readable");
-  return script;
-}
-
-// Draws the PNG of a curve table and its summary in a private temporary directory (the
-// figure names its inputs as waterbomb.csv and waterbomb.json, the files written beside it)
-// and returns its bytes. Throws std::runtime_error when Python or the script fails (an
-// installation problem, not bad input: exit 1), with the script's message.
-std::string draw_plot(const std::string& csv, const std::string& summary_json, bool sweep = false) {
-  const std::string script = plot_script();
-  char name[] = "/tmp/rigidfold_waterbomb_plot_XXXXXX";
-  if (!::mkdtemp(name)) throw std::runtime_error("--plot: cannot create a temporary directory");
-  const std::string dir = name;
-  struct Cleanup {
-    std::string dir;
-    ~Cleanup() {
-      for (const char* f : {"waterbomb.csv", "waterbomb.json", "waterbomb.png", "sweep.csv", "plot.log"})
-        ::unlink((dir + "/" + f).c_str());
-      ::rmdir(dir.c_str());
-    }
-  } cleanup{dir};
-  for (const auto& [file, text] : {std::pair<std::string, const std::string*>{sweep ? "sweep.csv" : "waterbomb.csv", &csv},
-                                   std::pair<std::string, const std::string*>{"waterbomb.json", &summary_json}}) {
-    if (sweep && file == "waterbomb.json") continue;
-    std::ofstream out(dir + "/" + file, std::ios::binary);
-    out << *text;
-    if (!out) throw std::runtime_error("--plot: cannot write the temporary " + file);
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
-  const std::string log = dir + "/plot.log";
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  std::vector<std::string> args{"/usr/bin/python3", script, "waterbomb.csv", "waterbomb.json", "--out", "waterbomb.png"};
-  if (sweep) args = {"/usr/bin/python3", script, "--sweep", "sweep.csv", "--out", "waterbomb.png"};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), ::environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error("--plot: cannot start /usr/bin/python3 (" + std::string(std::strerror(spawned)) + ")");
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("--plot: lost the plotting process");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("--plot: /usr/bin/python3 " + script + " failed (status " +
-                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "): " + file_bytes(log));
-  std::string png = file_bytes(dir + "/waterbomb.png");
-  if (png.size() < 8 || png.compare(1, 3, "PNG") != 0) throw std::runtime_error("--plot: the script wrote no PNG");
-  return png;
-}
-
 // A list flag: "A..B" (integers, step 1) when `range` is allowed, else numbers separated by commas.
 std::vector<double> number_list(const std::string& text, const char* flag, bool range) {
   std::vector<double> out;
@@ -200,14 +125,12 @@ void run_sweep(const Args& a, bool have_theta0) {
   spec.k_ratio = number_list(a.sweep_k, "--sweep-k-ratio", false);
   spec.theta0_deg = a.theta0_deg;
   OutputSet outputs;
-  std::string table_path, png_path;
+  std::string table_path;
   if (!a.plot.empty()) {
     outputs.add_output_directory("--plot", a.plot);
     const std::string dir = a.plot.back() == '/' ? a.plot : a.plot + "/";
     table_path = dir + "sweep.csv";
-    png_path = dir + "sweep.png";
     outputs.add_output("--plot", table_path);
-    outputs.add_output("--plot", png_path);
   }
   std::vector<waterbomb::SweepRow> rows;
   try {
@@ -218,11 +141,7 @@ void run_sweep(const Args& a, bool have_theta0) {
                      e.message());
   }
   const std::string csv = waterbomb::sweep_csv(rows);
-  if (!a.plot.empty()) {
-    const std::string png = draw_plot(csv, std::string(), true);
-    outputs.stage(table_path, csv);
-    outputs.stage(png_path, png);
-  }
+  if (!a.plot.empty()) outputs.stage(table_path, csv);
   outputs.commit();
   if (a.json) {
     nlohmann::ordered_json j;
@@ -247,7 +166,7 @@ void run_sweep(const Args& a, bool have_theta0) {
     return;
   }
   std::cout << csv;
-  if (!a.plot.empty()) std::cerr << "wrote " << table_path << ", " << png_path << "\n";
+  if (!a.plot.empty()) std::cerr << "wrote " << table_path << "\n";
 }
 
 }  // namespace
@@ -283,7 +202,7 @@ void add_waterbomb_command(CLI::App& app) {
   auto* split = cmd->add_option("--split-deg", a->split_deg,
                                  "split-fold base: sector b of each split-fold facet, degrees in (0, 180/n)");
   auto* plot_opt = cmd->add_option("--plot", a->plot,
-                  "directory to write waterbomb.csv, waterbomb.json and waterbomb.png (energy and force against apex height)");
+                  "directory to write waterbomb.csv and waterbomb.json (the data of python/plot_waterbomb.py's energy and force figure)");
   auto* samples = cmd->add_option("--samples", a->samples, "samples of --curve / --plot over the valid range, 3..2001 (default 181)");
   auto* target = cmd->add_option("--target-switching-force", a->target_switching_force,
                                   "design: the mountain stiffness k_m (k_v as given, default 1) whose switching force is this (> 0; radius-1 base)");
@@ -390,14 +309,13 @@ void add_waterbomb_command(CLI::App& app) {
     if (a->samples < 3 || a->samples > 2001)
       throw InputError("--samples", "must be between 3 and 2001, got " + std::to_string(a->samples));
     OutputSet outputs;
-    std::string plot_csv, plot_json, plot_png;
+    std::string plot_csv, plot_json;
     if (!a->plot.empty()) {
       outputs.add_output_directory("--plot", a->plot);
       const std::string dir = a->plot.back() == '/' ? a->plot : a->plot + "/";
       plot_csv = dir + "waterbomb.csv";
       plot_json = dir + "waterbomb.json";
-      plot_png = dir + "waterbomb.png";
-      for (const auto* path : {&plot_csv, &plot_json, &plot_png}) outputs.add_output("--plot", *path);
+      for (const auto* path : {&plot_csv, &plot_json}) outputs.add_output("--plot", *path);
     }
     if (!a->curve.empty()) outputs.add_output("--curve", a->curve);
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
@@ -571,11 +489,8 @@ void add_waterbomb_command(CLI::App& app) {
       const std::string csv = curve_csv(curve);
       if (!a->curve.empty()) outputs.stage(a->curve, csv);
       if (!a->plot.empty()) {
-        const std::string document = document_text(j) + "\n";
-        const std::string png = draw_plot(csv, document);
         outputs.stage(plot_csv, csv);
-        outputs.stage(plot_json, document);
-        outputs.stage(plot_png, png);
+        outputs.stage(plot_json, document_text(j) + "\n");
       }
     }
     outputs.commit();
@@ -645,7 +560,7 @@ void add_waterbomb_command(CLI::App& app) {
                     u["kind"].get<std::string>().c_str(), u["theta_from_deg"].get<double>(), u["theta_to_deg"].get<double>());
       std::cout << line;
     }
-    if (!a->plot.empty()) std::cout << "  wrote " << plot_csv << ", " << plot_json << ", " << plot_png << "\n";
+    if (!a->plot.empty()) std::cout << "  wrote " << plot_csv << ", " << plot_json << "\n";
   });
 }
 

@@ -141,6 +141,7 @@ Json foldability_json(const FoldabilityReport& r) {
   j["verdict_class"] = to_string(r.verdict);
   j["rigidly_foldable"] = r.foldable() ? Json(true) : r.not_foldable() ? Json(false) : Json(nullptr);
   j["is_proof"] = r.is_proof;
+  j["folds_in_part"] = r.folds_in_part;
   j["model"] = r.model_name;
   j["model_choice"] = r.model_choice;
   j["reason"] = r.reason;

@@ -9,8 +9,8 @@
 namespace rigidfold::cli {
 
 // Keys: assignment, verdict (the three-valued summary: rigidly-foldable, not-rigidly-foldable,
-// undecided), verdict_class (the five classes of DESIGN.md), rigidly_foldable (bool, or null
-// when undecided), is_proof, model, model_choice, reason, dof, dof_tolerance, tolerances,
+// undecided), verdict_class (the six classes of docs/DESIGN.md), rigidly_foldable (bool, or null
+// when undecided), is_proof, folds_in_part, model, model_choice, reason, dof, dof_tolerance, tolerances,
 // branches [{id, signs_match_assignment, driving_crease, range_deg, max_fold_deg, stopped_by,
 // max_residual, points, mv_switches, ...}], bifurcations [{parameter, kind, angles_deg, ...}],
 // mv_switches, obstruction (null or object), max_residual (rad), certificate_mismatch

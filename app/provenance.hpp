@@ -1,5 +1,5 @@
 #pragma once
-// Provenance of a command's JSON output (issue 18 item 4): which rigidfold wrote it and how it
+// Provenance of a command's JSON output: which rigidfold wrote it and how it
 // was called, so that a result can be traced back and reproduced:
 //   "provenance": {"rigidfold_version": "0.1.0", "rigidfold_commit": "178e3b3c0d1e",
 //                  "command": "trace", "arguments": ["trace", "P.fold", "--steps", "30", "--json"],

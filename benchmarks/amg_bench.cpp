@@ -1,5 +1,5 @@
-// Algebraic multigrid against CHOLMOD on the corrector's linear system (issue 11, "an
-// iterative path for large systems": hypre BoomerAMG was one of the two routes it named).
+// Algebraic multigrid against CHOLMOD on the corrector's linear system: hypre
+// BoomerAMG as an iterative path for large systems (one of two candidate routes).
 //
 // The system is the one every Newton step of the general corrector solves (newton_projection.hpp):
 //       G dx = J_f^T r,   G = J_f^T J_f + lambda I,   lambda = 1e-14 max diag(G),

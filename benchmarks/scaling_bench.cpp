@@ -1,4 +1,4 @@
-// Large-tessellation scaling benchmarks (issue 5). Every run reports the error it reached
+// Large-tessellation scaling benchmarks. Every run reports the error it reached
 // next to its time, plus the pattern size and the process's peak resident memory:
 //   edges               creases of the pattern (all edges, boundary included)
 //   residual            ||r||_inf reached (radians)
@@ -326,11 +326,11 @@ void BM_PerturbedCorrector(benchmark::State& state) {
   finish(state, p);
 }
 
-// Issue 11's side-by-side table with the Python/Numba peer (osbo/rigid-origami), measured the
+// The side-by-side table with the Python/Numba peer (osbo/rigid-origami), measured the
 // same way: the general solver forced (trace_motion with force_general, as `trace
 // --general`), 30 equally spaced steps of the driving straight crease from flat to 150 deg in
 // its letter's direction. Error: every step against the Miura closed form at its own drive.
-// Peer figures (measured elsewhere, quoted by the issue): 9.5 s at 50 x 50, 56 s at 100 x 100.
+// Peer figures (measured elsewhere and quoted here): 9.5 s at 50 x 50, 56 s at 100 x 100.
 void BM_PeerTrace(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));
   TraceRequest rq;
@@ -356,7 +356,7 @@ void BM_PeerTrace(benchmark::State& state) {
 }
 
 // The peer table's corrector: one Newton projection from the closed form at rho_s = 1.2 plus
-// uniform noise of 1e-3 rad (the issue's figure; BM_Corrector uses 1e-4), one crease held.
+// uniform noise of 1e-3 rad (the quoted peer setting; BM_Corrector uses 1e-4), one crease held.
 // Peer figures: 0.86 s at 100 x 100, 5.9 s at 200 x 200.
 void BM_PeerCorrector(benchmark::State& state) {
   const MiuraCase c(static_cast<int>(state.range(0)));

@@ -4,9 +4,8 @@
 // reports the error reached: "max_defect" (loop gain) / "mismatch" for the multiplier
 // path; "residual" and "error_vs_closed_form" for the corrector.
 //
-// Issue 11's general cases beside the Miura: `check`'s front door (check_foldability) on every
-// crease-pattern file of the corpus beside the project (../shared/corpus from the source
-// tree, as for the tests; absent in CI clones, where those runs are skipped), and the
+// The general cases beside the Miura: `check`'s front door (check_foldability) on every
+// crease-pattern file of the corpus (tests/data/corpus, as for the tests), and the
 // general verdict forced on a jittered Miura (interior vertices moved by up to 0.01 of the
 // default panel size: not foldable, which `check` proves by the multiplier model's loop gain,
 // 0.34 s at 100 x 100; the general solver's evidence search is what is timed here). Their
@@ -118,7 +117,7 @@ void BM_GeneralVerdictJitteredMiura(benchmark::State& state) {
   state.SetLabel(to_string(v.verdict));
 }
 
-// The multi-DOF case (issue 11, item 4): the general verdict on an n x n waterbomb
+// The multi-DOF case: the general verdict on an n x n waterbomb
 // tessellation (2 (rows + cols) - 3 DOF), certified by the fold-size trace.
 void BM_GeneralVerdictWaterbombTessellation(benchmark::State& state) {
   generators::WaterbombTessellationParams params;

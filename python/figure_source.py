@@ -1,4 +1,4 @@
-"""Every figure names its input (issue 18 item 4): a small grey line at the foot of the figure
+"""Every figure names its input: a small grey line at the foot of the figure
 with the files it was drawn from and the rigidfold version that wrote them where known.
 
 Used by the python/plot_*.py scripts: ``stamp_inputs(fig, [path, ...], version=None)`` before

@@ -82,7 +82,7 @@ def fmt(v):
     return f"{v:.4g}" if isinstance(v, float) else str(v)
 
 
-TARGET_N = 1000  # the issue's targets are stated for a 1000 x 1000 Miura
+TARGET_N = 1000  # the performance targets (docs/benchmarks.md) are stated for a 1000 x 1000 Miura
 
 
 def verdict(ok):
@@ -90,7 +90,7 @@ def verdict(ok):
 
 
 def targets_section(fams, exps):
-    """The issue's targets: met / missed / not measured, the measured figure, the margin."""
+    """The performance targets: met / missed / not measured, the measured figure, the margin."""
     rows = []
 
     def at_size(fam, n):
@@ -185,7 +185,7 @@ def targets_section(fams, exps):
                      f"worst {worst:.3g} rad ({wr['name'].split('/process_time')[0]}), sizes n = "
                      f"{', '.join(map(str, sizes))}; 1000 x 1000 "
                      f"{'included' if TARGET_N in sizes else 'not measured'}{miss}"))
-    out = ["## Targets (issue 5)", "",
+    out = ["## Targets", "",
            "| target | status | measured |", "|---|---|---|"]
     out += [f"| {t} | {s} | {m} |" for t, s, m in rows]
     out.append("")
@@ -193,8 +193,8 @@ def targets_section(fams, exps):
     return out
 
 
-# Issue 11: the peer (osbo/rigid-origami, Python + Numba) measured elsewhere on a 2-core
-# machine, as the issue quotes it; rigidfold's targets are 20x the peer for the traces.
+# The peer (osbo/rigid-origami, Python + Numba), measured elsewhere on a 2-core machine and
+# quoted here; rigidfold's targets are 20x the peer for the traces.
 PEER = [  # (family, n, peer seconds, target seconds or None, what)
     ("BM_PeerTrace", 50, 9.5, 0.5, "`trace --general`, 50 x 50 Miura, 30 steps to 150 deg"),
     ("BM_PeerTrace", 100, 56.0, 2.5, "`trace --general`, 100 x 100 Miura, 30 steps to 150 deg"),
@@ -204,9 +204,9 @@ PEER = [  # (family, n, peer seconds, target seconds or None, what)
 
 
 def peer_section(fams):
-    """Issue 11's side-by-side table: rigidfold measured here, the peer as quoted."""
-    out = ["## Against the Python/Numba peer (issue 11)", "",
-           "Peer figures: osbo/rigid-origami (Python + Numba), measured elsewhere and quoted by issue 11; "
+    """The side-by-side table: rigidfold measured here, the peer as quoted."""
+    out = ["## Against the Python/Numba peer", "",
+           "Peer figures: osbo/rigid-origami (Python + Numba), measured elsewhere and quoted here; "
            "rigidfold's from this run (BM_PeerTrace: the kernel's trace_motion with the general solver forced, "
            "as `trace --general`, FOLD reading excluded).", "",
            "| run | rigidfold s | peer s | ratio | target | status | error vs closed form | residual |",
@@ -228,20 +228,20 @@ def peer_section(fams):
 
 
 def general_cases_section(fams):
-    """Issue 11's general cases beside the Miura: `check` on each corpus file (target <= 2 s)
+    """The general cases beside the Miura: `check` on each corpus file (target <= 2 s)
     and the general verdict forced on a jittered Miura (verdict_bench)."""
-    out = ["## General cases: corpus files and a jittered Miura (issue 11)", ""]
+    out = ["## General cases: corpus files and a jittered Miura", ""]
     corpus = sorted(fams.get("BM_CheckCorpusFile", []), key=lambda r: r["name"])
     if corpus:
         worst = max(seconds(r)[0] for r in corpus)
-        out += [f"`check` (check_foldability, default options) on each file of ../shared/corpus: slowest "
+        out += [f"`check` (check_foldability, default options) on each file of tests/data/corpus: slowest "
                 f"{worst:.3g} s, target <= 2 s per file: {verdict(worst <= 2.0)}.", "",
                 "| file | creases | wall s | verdict |", "|---|---|---|---|"]
         out += [f"| {r['name'].split('/', 1)[1].replace('/iterations:1', '')} | {int(r.get('edges', 0))} | {seconds(r)[0]:.3g} | "
                 f"{r.get('label', '').split(': ', 1)[-1]} |" for r in corpus]
         out.append("")
     else:
-        out += ["No corpus beside the project (../shared/corpus): the per-file `check` runs were skipped.", ""]
+        out += ["No corpus (tests/data/corpus): the per-file `check` runs were skipped.", ""]
     jit = sorted(fams.get("BM_GeneralVerdictJitteredMiura", []), key=lambda r: r.get("edges", 0))
     if jit:
         out += ["General verdict forced on an n x n Miura with interior vertices jittered by up to 0.01 (the "
@@ -283,12 +283,12 @@ def amg_setting(run):
 
 def amg_section(fams):
     """benchmarks/amg_bench: hypre BoomerAMG-preconditioned CG against CHOLMOD's direct step on
-    the corrector's system G dx = J_f^T r (issue 11 named AMG as one iterative route)."""
+    the corrector's system G dx = J_f^T r (AMG is one candidate iterative route)."""
     direct = {r["edges"]: r for r in fams.get("BM_CholmodStep", [])}
     amg = [r for fam, rs in fams.items() if fam.startswith("BM_AmgPcgStep") for r in rs]
     if not direct or not amg:
         return []
-    out = ["## Algebraic multigrid against CHOLMOD on the corrector's system (issue 11)", "",
+    out = ["## Algebraic multigrid against CHOLMOD on the corrector's system", "",
            "One Newton step's linear system G dx = J_f^T r (G = J_f^T J_f + lambda I, Miura at its closed form plus "
            "1e-4 rad noise, crease 0 held): CHOLMOD's analysis, factorisation and solve (BM_CholmodStep), against "
            "hypre's PCG with one BoomerAMG V-cycle per iteration to a relative residual of 1e-10 (BM_AmgPcgStep; the "
@@ -366,7 +366,7 @@ def main():
     fams = defaultdict(list)
     for r in runs:
         fams[family(r)].append(r)
-    lines = ["# rigidfold benchmarks (issue 5)", ""]
+    lines = ["# rigidfold benchmarks", ""]
     lines.append(f"Host: {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs, "
                  f"load average {ctx.get('load_avg', '?')}, date {ctx.get('date', '?')}. "
                  "Times in seconds: wall (real) and process CPU (all threads). "

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark report for large tessellations (issue 5): builds Release, runs every benchmark
+# Benchmark report for large tessellations: builds Release, runs every benchmark
 # of benchmarks/scaling_bench (one process per benchmark, so that each peak-memory figure
 # is its own), plus verdict_bench and amg_bench (where hypre is found), and writes
 # out/bench/BENCH.md with tables and plots (python/plot_bench.py, matplotlib from Debian).

@@ -14,7 +14,6 @@
 namespace rigidfold::generators {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kPanels = 5;  // sheet panels per direction
 constexpr int kWindow = 3;  // window panels per direction
 

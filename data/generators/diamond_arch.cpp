@@ -1,4 +1,5 @@
 #include "data/generators/diamond_arch.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -13,7 +14,6 @@ namespace rigidfold::generators {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 int apex_top(int n, int j) { return n + 2 + j; }
 int apex_bottom(int n, int j) { return n + 2 + (n + 1) + j; }

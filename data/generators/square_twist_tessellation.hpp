@@ -1,5 +1,5 @@
 #pragma once
-// Square-twist tessellation (issue 5): a rows x cols grid of square twists joined by pleats,
+// Square-twist tessellation: a rows x cols grid of square twists joined by pleats,
 // every interior vertex a flat-foldable degree-4 vertex, with M-V letters that make the whole
 // sheet rigidly foldable with 1 DOF (layouts Type4, Type3Rows) or not foldable at all
 // (AllType1, AllType2: the "same size, not foldable" benchmark case).

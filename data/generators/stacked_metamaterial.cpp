@@ -1,4 +1,5 @@
 #include "data/generators/stacked_metamaterial.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -13,7 +14,6 @@
 namespace rigidfold::generators {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using V3 = Eigen::Vector3d;
 
 // A half-turn about the unit axis n, and the reflection in the plane with unit normal m.

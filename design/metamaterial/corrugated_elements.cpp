@@ -1,4 +1,5 @@
 #include "design/metamaterial/corrugated_elements.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <ceres/jet.h>
 
@@ -11,7 +12,6 @@
 namespace rigidfold::metamaterial {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using Jet = ceres::Jet<double, 1>;
 
 void check(const CorrugatedElementParams& p) {

@@ -7,7 +7,7 @@
 //
 // Inputs: the sector angles alpha, beta (radians, in (0, pi)) of the elements' vertices, the
 // common crease length l (> 0), and the input phi: the DIHEDRAL angle of crease A2B2 (radians;
-// pi = flat, decreasing as the element folds; phi = pi - |rho| in the DESIGN.md fold angle rho).
+// pi = flat, decreasing as the element folds; phi = pi - |rho| in the docs/DESIGN.md fold angle rho).
 // Outputs: W, L, H in the unit of l; their derivatives d/dphi (exact, forward-mode automatic
 // differentiation with ceres::Jet through the same formulas); nu_in = -(dL/L)/(dW/W),
 // nu_out = -(dH/H)/(dW/W) (3-28).

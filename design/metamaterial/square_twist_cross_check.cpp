@@ -1,4 +1,5 @@
 #include "design/metamaterial/square_twist_cross_check.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/SVD>
 #include <algorithm>
@@ -26,7 +27,6 @@
 namespace rigidfold::metamaterial {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kN = 3;                 // twists per side: a centre twist and two periods
 constexpr double kFoldedEnd = 0.05;   // states with theta > pi - this are not compared (0/0)
 constexpr double kSignProbe = 1e-4;   // drive offset (rad) for nu_HL either side of a stationary point

@@ -1,8 +1,8 @@
 #pragma once
 // Independent check of the square-twist closed forms (seed 003 (3-30) ... (3-32),
 // square_twist_unit.hpp) on the actual tessellation traced by the kernel's general solver
-// (issue 17 acceptance: "Poisson's ratios and maximum heights agree between the closed forms
-// and the traced tessellation to <= 1e-9; nu_HL changes sign at the height maximum").
+// (Poisson's ratios and maximum heights agree between the closed forms and the traced
+// tessellation to <= 1e-9; nu_HL changes sign at the height maximum).
 //
 // The sheet: data/generators' square-twist tessellation, layout Type3Rows (every twist Type 3,
 // the seed's T1), 3 x 3 twists, side 1, twist t = pi - alpha, centre spacings

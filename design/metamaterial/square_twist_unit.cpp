@@ -1,4 +1,5 @@
 #include "design/metamaterial/square_twist_unit.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
@@ -11,7 +12,6 @@
 namespace rigidfold::metamaterial {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 void check_alpha(double alpha) {
   if (!(alpha > kPi / 2 && alpha < kPi))

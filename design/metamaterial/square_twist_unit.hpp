@@ -17,7 +17,7 @@
 // dimensions (for the generator's sheet: both equal its twist spacing, so b = c).
 // theta, phi in [0, pi] are fold-angle MAGNITUDES (0 flat, pi folded onto itself); the seed's
 // sign convention (mountain > 0) does not enter because both pleat creases of one pleat fold
-// by the same magnitude with opposite letters. In the DESIGN.md convention, theta = |rho| of
+// by the same magnitude with opposite letters. In the docs/DESIGN.md convention, theta = |rho| of
 // any crease of a pleat that runs along S (e.g. A's outer crease o_b of a generator twist),
 // phi = |rho| of any crease of a pleat along L (e.g. B's o_b).
 //

@@ -1,4 +1,5 @@
 #include "design/metamaterial/stacked_metamaterial_check.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
@@ -24,7 +25,6 @@
 namespace rigidfold::metamaterial {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using V3 = Eigen::Vector3d;
 using generators::StackedLayerSheet;
 

@@ -1,6 +1,6 @@
 #pragma once
-// Cam interference of a pattern's SORCE solids along the folding path (issue 16, Build 2:
-// "slab and cam non-interference over sampled t (FCL)"; the slab-only check is
+// Cam interference of a pattern's SORCE solids along the folding path (slab and
+// cam non-interference over sampled t, by FCL; the slab-only check is
 // PatternChecks::interference in sorce_pattern.hpp).
 //
 // Every cam shell of every panel (sorce_pattern_solids.hpp), placed by its panel's pose

@@ -1,5 +1,5 @@
 #pragma once
-// The SORCE front door (issue 16): a crease pattern in, its SORCE joints out - the path
+// The SORCE front door: a crease pattern in, its SORCE joints out - the path
 // traced once by the kernel's trace_motion with the model `check` picks (the exact multiplier
 // family for a pattern of flat-foldable degree-4 vertices, the general loop-closure solver
 // otherwise, or always with sorce.trace.force_general), the joints of sorce_pattern.hpp, and,

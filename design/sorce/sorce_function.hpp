@@ -7,7 +7,7 @@
 // autodiff) and never by finite differences: the end points t = 0, 1 are where the seed's
 // tan(pi t / 2) parameterizations (eqs 25, 35) defeat naive differencing.
 //
-// Units: t dimensionless; angles radians (fold angle > 0 valley, DESIGN.md); offsets in the
+// Units: t dimensionless; angles radians (fold angle > 0 valley, docs/DESIGN.md); offsets in the
 // caller's length unit.
 #include <array>
 #include <functional>

@@ -13,7 +13,7 @@
 // Accuracy on a smooth path with N intervals: value O(N^-6), k-th derivative O(N^(k-6))
 // (measured in tests/sorce/sorce_path_spline_test.cpp).
 //
-// Units: t dimensionless, angles radians (rho > 0 valley, DESIGN.md).
+// Units: t dimensionless, angles radians (rho > 0 valley, docs/DESIGN.md).
 #include <Eigen/Core>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// SORCE joints for a whole crease pattern (seed 002, digest sections 1, 4; issue 16).
+// SORCE joints for a whole crease pattern (seed 002, digest sections 1, 4).
 //
 // Input: a flat crease pattern (FOLD, faces counter-clockwise seen from +z), a folding path
 // traced by the kernel's general solver (kernel/analysis/trace_motion.hpp) and splined per

@@ -1,5 +1,5 @@
 #pragma once
-// Printable solids of a whole pattern's SORCE panels (issue 16 outputs): every face of a
+// Printable solids of a whole pattern's SORCE panels: every face of a
 // PatternSorce built by panel_solid (sorce_solids.hpp) in its flat t = 0 pose - its slab cut
 // back from each folding crease and one cam per such crease, the crease's sampled profile
 // (sample_profiles) extruded along it.

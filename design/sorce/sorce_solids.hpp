@@ -1,5 +1,5 @@
 #pragma once
-// Printable solids of SORCE panels (issue 16 outputs): each panel as closed, outward-oriented
+// Printable solids of SORCE panels: each panel as closed, outward-oriented
 // polygon shells — its slab cut back from every fold that carries a cam, and one cam per
 // such fold: the fold's profile (sorce_profile.hpp) extruded along the crease — for binary
 // STL (polygons_stl in kernel/geometry/folded_output.hpp).

@@ -1,5 +1,5 @@
 #pragma once
-// SVG drawing of SORCE profile pairs (issue 16 outputs): polylines in panel-local
+// SVG drawing of SORCE profile pairs: polylines in panel-local
 // coordinates, for checking by eye and for handing to CAD.
 //
 // One fold: the left profile s_l(t) (class "left") and the right profile s_r(t) (class

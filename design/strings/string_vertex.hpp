@@ -1,6 +1,6 @@
 #pragma once
 // One Miura vertex of an origami string, in closed form (seed 000, with the corrections of
-// DESIGN.md: K3 = (K2/cos th)^2 + (K1/sin th)^2, psi = atan(f_y / f_x), a_x != 1 root).
+// docs/DESIGN.md: K3 = (K2/cos th)^2 + (K1/sin th)^2, psi = atan(f_y / f_x), a_x != 1 root).
 //
 // The double-precision state (string_vertex_state) comes from the kernel's closed form,
 // kernel/vertex/miura_vertex.hpp (same frames and signs). string_vertex_frame is the same

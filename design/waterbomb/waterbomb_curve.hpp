@@ -1,6 +1,6 @@
 #pragma once
-// The waterbomb base's energy and force-deflection curves, sampled for plotting (issue 14:
-// the figures of seed 004 Figs 2.9-2.11 and 3.x). Each sample pairs the closed forms on the
+// The waterbomb base's energy and force-deflection curves, sampled for plotting (the
+// figures of seed 004 Figs 2.9-2.11 and 3.x). Each sample pairs the closed forms on the
 // symmetric 1-DOF path (waterbomb_energy.hpp, waterbomb_force.hpp) with the general model's
 // loaded equilibrium at the same vertex height (waterbomb_loaded_path.hpp: the full 2n-crease
 // vertex, no symmetry imposed, reaction force from the Lagrange multipliers).

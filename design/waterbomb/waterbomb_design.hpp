@@ -1,5 +1,5 @@
 #pragma once
-// Inverse design of the waterbomb base (issue 14 item 5, closed-form part): the stiffness
+// Inverse design of the waterbomb base (closed-form part): the stiffness
 // ratio k_m / k_v that puts the second stable state at a chosen theta.
 //
 // On the symmetric path dV/dtheta = n [k_m (gm - gm0) gm' + k_v (gv - gv0) gv'] = 0 at

@@ -1,5 +1,5 @@
 #pragma once
-// Which branch the loaded waterbomb path takes through the flat state (issue 14 item 3).
+// Which branch the loaded waterbomb path takes through the flat state.
 //
 // The flat state is a bifurcation point: the M/V-preserving symmetric branch and its
 // all-reversed mirror meet there, and the loaded path has a corner. The branch on the far

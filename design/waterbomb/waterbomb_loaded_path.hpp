@@ -1,5 +1,5 @@
 #pragma once
-// The waterbomb base under displacement control on the general model (issue 14 item 3):
+// The waterbomb base under displacement control on the general model:
 // at each prescribed vertex height h = r cos(theta) the loaded equilibrium of the full
 // 2n-crease vertex (kernel/energy/vertex_height_control.hpp: supports at the valley ends, no
 // symmetry imposed), its reaction force (the Lagrange multipliers) beside the virtual-work

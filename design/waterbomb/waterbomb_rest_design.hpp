@@ -1,6 +1,6 @@
 #pragma once
-// Inverse design of the waterbomb base's rest angle (issue 14 item 5, "the rest angle theta0
-// for a target second stable state"): the theta0 whose spring energy has its second stable
+// Inverse design of the waterbomb base's rest angle (the rest angle theta0
+// for a target second stable state): the theta0 whose spring energy has its second stable
 // state at a chosen theta2 past flat, for given stiffnesses.
 //
 // On the symmetric path (waterbomb_energy.hpp) dV/dtheta = 0 at theta2 reads

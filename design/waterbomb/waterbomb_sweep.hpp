@@ -1,6 +1,6 @@
 #pragma once
-// Design sweeps of the waterbomb base (issue 14 item 5: "sweeps over n, b and k ratio
-// producing tables and plots"): one checked bistability analysis per combination of degree n,
+// Design sweeps of the waterbomb base (sweeps over n, b and k ratio
+// producing tables and plots): one checked bistability analysis per combination of degree n,
 // split width b (0: the plain base) and stiffness ratio k_m / k_v (k_v = 1) at one rest angle.
 // Each row comes from waterbomb_bistability (plain) or split_fold_bistability (b > 0), so its
 // numbers passed those checks (general-model confirmation); a combination that is not valid

@@ -1,6 +1,6 @@
 #pragma once
-// Switching force of the symmetric waterbomb base and the stiffness that sets it (issue 14
-// item 5: "a target switching force").
+// Switching force of the symmetric waterbomb base and the stiffness that sets it (for a
+// target switching force).
 //
 // Under force control a push F on the apex moves the base from its rest state theta0 < pi/2
 // toward flat along the symmetric path while F(theta) = V'(theta) / (r sin theta)

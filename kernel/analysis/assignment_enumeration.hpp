@@ -1,5 +1,5 @@
 #pragma once
-// Mountain-valley assignment enumeration (issue 17 item 3; seed 003 §3.2-3.3): every
+// Mountain-valley assignment enumeration (seed 003 §3.2-3.3): every
 // assignment of a flat crease pattern's creases that folds each interior vertex flat
 // (kernel/pattern/vertex_letter_rules.hpp: Maekawa and big-little-big via the crimp
 // reduction; Kawasaki is the geometry's), grouped into classes under the pattern's symmetry

@@ -1,6 +1,6 @@
 #pragma once
 // Every folding branch of a 1-DOF-per-branch pattern, from the flat state through its
-// bifurcations (DESIGN.md, "Bifurcation"; issue 3 step 4).
+// bifurcations (docs/DESIGN.md, "Bifurcation").
 //
 // Method (points and branches form a graph):
 //   1. The flat state x = 0 is the first point. Its tangent cone (tangent_cone.hpp: kernel

@@ -1,5 +1,5 @@
 #pragma once
-// From a weakly folded state to a strictly folded one (issue 12, item 1: strict and weak
+// From a weakly folded state to a strictly folded one (strict and weak
 // foldability). A folded point found by a sign-bounded search often leaves some M/V creases
 // exactly flat (on their bound) although the pattern has strictly folded states nearby; the
 // general verdict then could only certify weak foldability.

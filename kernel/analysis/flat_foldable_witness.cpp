@@ -1,4 +1,5 @@
 #include "kernel/analysis/flat_foldable_witness.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -14,7 +15,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double wrap(double a) {  // to (-pi, pi]
   a = std::remainder(a, 2 * kPi);

@@ -1,5 +1,5 @@
 #pragma once
-// "Foldable within the precision of your file" for flat crease patterns (issue 12, item 3):
+// "Foldable within the precision of your file" for flat crease patterns:
 // a Miura-ori or square twist exported with 3 decimals (Origami Simulator's SVGs) has degree-4
 // vertices that miss Kawasaki's condition by ~1e-5 rad, so the exact multiplier model does
 // not apply and the general model, judging the rounded numbers exactly, finds them rigid or

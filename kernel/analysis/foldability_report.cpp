@@ -496,6 +496,7 @@ const char* to_string(FoldabilityClass c) {
   switch (c) {
     case FoldabilityClass::kFoldable: return "foldable";
     case FoldabilityClass::kFoldableWithinTolerance: return "foldable within the input's precision";
+    case FoldabilityClass::kFoldableInPart: return "foldable only in part";
     case FoldabilityClass::kNotFoldableProof: return "not foldable (proof)";
     case FoldabilityClass::kNotFoldableEvidence: return "not foldable (evidence)";
     case FoldabilityClass::kUndecided: return "undecided";
@@ -608,6 +609,31 @@ ModelChoice choose_model(const CreasePattern& pattern, const Topology& topology,
 
 namespace {
 
+// With letters, the headline answers the strict question (foldability_report.hpp): a certified
+// motion that leaves lettered creases flat is a partial answer, and crossing straight lettered
+// lines turn it into a proof that no motion folds every lettered crease.
+void answer_the_strict_question(const FoldabilityOptions& options, FoldabilityReport& r) {
+  if (!options.use_assignment || r.verdict != FoldabilityClass::kFoldable || !r.strictness || r.strictness->strict) return;
+  const StrictnessReport& st = *r.strictness;
+  r.folds_in_part = true;
+  const std::string flat = std::to_string(st.flat_lettered.size()) + " lettered crease(s) flat";
+  if (st.strict_obstruction_vertices.empty()) {
+    r.verdict = FoldabilityClass::kFoldableInPart;
+    r.reason = "foldable only in part: the certified motion keeps every letter but leaves " + flat +
+               "; no motion folding every lettered crease was found, and none is ruled out; " + r.reason;
+    return;
+  }
+  r.verdict = FoldabilityClass::kNotFoldableProof;
+  r.is_proof = true;
+  FoldabilityObstruction ob;
+  ob.kind = "crossing lettered lines";
+  ob.message = "straight lettered crease lines cross at " + std::to_string(st.strict_obstruction_vertices.size()) +
+               " degree-4 vertices (first: vertex " + std::to_string(st.strict_obstruction_vertices.front()) +
+               "), where no motion from flat folds all four creases: no motion folds every lettered crease";
+  r.reason = "not foldable: " + ob.message + " (proof); foldable only in part, leaving " + flat + ": " + r.reason;
+  r.obstruction = std::move(ob);
+}
+
 // A sheet of several pieces: each checked alone (FoldabilityReport::pieces), and the whole
 // sheet's verdict compared with what the pieces imply.
 void check_pieces(const CreasePattern& pattern, const Topology& topology, const FoldabilityOptions& options,
@@ -714,6 +740,7 @@ FoldabilityReport check_foldability(const CreasePattern& pattern, const Topology
     r.reason = std::string("no solver applies to this pattern: ") + e.what();
   }
   if (topology.components.size() > 1) check_pieces(pattern, topology, options, r);
+  answer_the_strict_question(options, r);
   // Letters ignored and no motion found: a motion that keeps the letters is one with them
   // ignored too, so the lettered check's yes, when it has one, is the answer here (a rounded
   // Miura-ori's witness is decided by the multiplier model only with its letters).

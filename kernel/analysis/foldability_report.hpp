@@ -3,7 +3,7 @@
 // rigid-foldability report; `rigidfold check`, `rigidfold report` and `rigidfold trace` (via
 // choose_model) go through it, and no caller decides a verdict of its own.
 //
-// Model choice (DESIGN.md, "Model only what a scene needs"), in this order:
+// Model choice (docs/DESIGN.md, "Model only what a scene needs"), in this order:
 //   1. a sheet with holes (tubes), or a folded form (3D given state) whose vertices are not
 //      developable (so the flat state is no configuration of its sectors): given-state
 //      mobility (reference_mobility.hpp; one SE(3) closure per hole): DOF 0 is a proof of
@@ -25,13 +25,25 @@
 //      most tolerances.certificate_residual all along, is a certified folding motion and
 //      makes the verdict "foldable" even when the search found none.
 //
-// Verdict classes (DESIGN.md, "Verdict classes and tolerance"):
-//   kFoldable                 a certified path (traced branch or exact family);
+// The question answered: with M/V letters given (and used), "foldable" means that a rigid
+// motion from flat folds every lettered crease with its letter (the strict question). A
+// certified motion that keeps every letter but leaves some lettered creases flat answers only
+// the weak question: the verdict is then kFoldableInPart, or kNotFoldableProof where crossing
+// straight lettered lines rule out every strict motion; `folds_in_part` and `strictness` keep
+// the weak motion (which creases stay flat) in both cases. With letters ignored, any motion
+// from flat is "foldable".
+//
+// Verdict classes (docs/DESIGN.md, "Verdict classes and tolerance"):
+//   kFoldable                 a certified path (traced branch or exact family), every lettered
+//                             crease folding with its letter where letters are used;
+//   kFoldableInPart           a certified path that keeps every letter but leaves some lettered
+//                             creases flat, and no motion folding them all was found or ruled out;
 //   kFoldableWithinTolerance  a folded form whose closure gap the input's rounding explains:
 //                             a pattern within the file's precision (the rounding witness)
 //                             has the given state as an exact configuration and folds from it;
 //   kNotFoldableProof         loop gain != 1, a pin, no mode matching the letters, DOF 0
-//                             at a regular given state, no foldable crease;
+//                             at a regular given state, no foldable crease, or straight
+//                             lettered lines crossing (no motion folds every lettered crease);
 //   kNotFoldableEvidence      the general search found no folded point near flat and its
 //                             least residual is above the evidence floor and grows with the
 //                             fold amplitude: numerical evidence, not a proof (is_proof false);
@@ -62,7 +74,14 @@
 
 namespace rigidfold {
 
-enum class FoldabilityClass { kFoldable, kFoldableWithinTolerance, kNotFoldableProof, kNotFoldableEvidence, kUndecided };
+enum class FoldabilityClass {
+  kFoldable,
+  kFoldableWithinTolerance,
+  kFoldableInPart,
+  kNotFoldableProof,
+  kNotFoldableEvidence,
+  kUndecided
+};
 const char* to_string(FoldabilityClass c);
 
 enum class FoldabilityModel { kMultiplierPropagation, kGeneralLoopClosure, kGivenStateHoleClosure, kNone };
@@ -83,6 +102,7 @@ struct FoldabilityOptions {
 // Why a pattern does not fold (or the search's evidence that it does not).
 struct FoldabilityObstruction {
   std::string kind;     // "loop gain", "pin", "vertex assignment", "sign" (multiplier model),
+                        // "crossing lettered lines" (no strict motion; strict_obstruction_vertices),
                         // "no folded point found near flat" (general), "first-order rigid" (given state)
   std::string message;
   std::optional<Obstruction> exact;                   // the multiplier model's obstruction
@@ -101,7 +121,7 @@ struct FoldabilityReport {
   std::string reason;               // one line for the user
   bool assignment_used = true;
   Tolerances tolerances;            // the values used
-  int dof = 0;                      // 0 unless foldable
+  int dof = 0;                      // DOF at the certified motion (0 when there is none)
   std::string dof_basis;            // how the DOF was counted (rank cut, or family components)
   std::vector<TracedBranch> branches;
   // Points where branches meet. Multiplier model: the flat state. General model with the
@@ -114,9 +134,12 @@ struct FoldabilityReport {
   double exploration_seconds = 0.0;
   bool exploration_budget_exhausted = false;  // BranchExplorerOptions::max_dense_work ran out
   std::vector<SignSwitch> sign_switches;  // general model: along the search's certificate trace
-  // General model, foldable by the search's certificate: strict (every M/V crease folds) or
-  // weak (the listed lettered creases stay flat). Empty on other models and verdicts.
+  // General model, a certified motion: strict (every M/V crease folds) or weak (the listed
+  // lettered creases stay flat). Empty on other models and where no motion was certified.
   std::optional<StrictnessReport> strictness;
+  // With letters: the certified motion leaves some lettered creases flat (strictness lists
+  // them); the verdict is then kFoldableInPart or kNotFoldableProof, never kFoldable.
+  bool folds_in_part = false;
   // General model, foldable: up to 6 states of the certifying path (per-edge fold angles,
   // radians; its first and last valid points included), for replay by other tools. Empty on
   // other models and verdicts.

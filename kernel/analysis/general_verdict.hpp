@@ -1,5 +1,5 @@
 #pragma once
-// Rigid-foldability verdict by the general loop-closure solver (DESIGN.md, "Foldability
+// Rigid-foldability verdict by the general loop-closure solver (docs/DESIGN.md, "Foldability
 // verdict"): works for any pattern without holes (any vertex degree, non-flat-foldable
 // vertices), unlike the exact multiplier model (multiplier_propagation.hpp), which it is
 // tested against where both apply.

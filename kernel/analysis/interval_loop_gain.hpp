@@ -1,5 +1,5 @@
 #pragma once
-// A loop-gain proof that holds for every pattern within a file's rounding (issue 12: the
+// A loop-gain proof that holds for every pattern within a file's rounding (so that the
 // classic square twist drawn with 3 decimals is "not foldable", not "undecided").
 //
 // The multiplier model finds a cycle of degree-4 vertices whose loop gain misses 1 on one

@@ -1,6 +1,6 @@
 #pragma once
 // Multiplier propagation: the exact, O(creases) rigid-foldability model for crease patterns
-// whose interior vertices are all flat-foldable degree-4 vertices (DESIGN.md, "Model only
+// whose interior vertices are all flat-foldable degree-4 vertices (docs/DESIGN.md, "Model only
 // what a scene needs"; seed 003 §3.2-3.3, seed 001 §2).
 //
 // Model. Each interior vertex v folds in one of its two modes m_v (flat_foldable_multipliers.hpp),

@@ -1,6 +1,6 @@
 #pragma once
 // Mobility of a sheet from its own (3D) reference state: the verdict for sheets that are not
-// disks (tubes, frames: DESIGN.md, "one SE(3) closure per hole"), whose given state is the
+// disks (tubes, frames: docs/DESIGN.md, "one SE(3) closure per hole"), whose given state is the
 // only known configuration (a bonded tube has no flat development).
 //
 // Method.

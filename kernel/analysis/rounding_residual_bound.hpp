@@ -1,6 +1,6 @@
 #pragma once
 // How much closure gap the rounding of a file's coordinates can cause at a folded state
-// (issue 12: no "not foldable" may rest on a residual the input's precision explains).
+// (no "not foldable" may rest on a residual the input's precision explains).
 //
 // The file's sectors alpha_i differ from the true pattern's by d_i, |d_i| <= delta_i (the
 // sector bounds of rounding_witness.hpp, from coordinate_precision), and a flat pattern's

@@ -1,5 +1,5 @@
 #pragma once
-// "Foldable within the precision of your file" (issue 12, items 3 and 4): a pattern given in
+// "Foldable within the precision of your file": a pattern given in
 // a folded state whose coordinates were rounded does not close exactly, and its flat state
 // may not even be a configuration (rounded 3D sectors need not sum to 360 deg). Judged in
 // exact arithmetic such a file is rigid; judged against its own precision it may fold.

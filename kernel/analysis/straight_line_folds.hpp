@@ -1,5 +1,5 @@
 #pragma once
-// Straight crease lines: the structural part of a verdict (issue 12, "evidence for every no";
+// Straight crease lines: the structural part of a verdict (evidence for every no;
 // strict and weak foldability).
 //
 // A STRAIGHT LINE is a chain of hinge creases that continues through each interior vertex it

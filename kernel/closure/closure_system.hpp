@@ -1,6 +1,6 @@
 #pragma once
 // The loop-closure constraint system of a whole crease pattern: unknowns, residual and the
-// exact sparse Jacobian (DESIGN.md, "The kinematic core").
+// exact sparse Jacobian (docs/DESIGN.md, "The kinematic core").
 //
 // Unknowns x: the fold angles (radians, FOLD sign: > 0 valley, < 0 mountain) of the FREE
 //   creases, i.e. the hinge edges (two faces, see Topology::edge_is_hinge) assigned M, V or

@@ -1,5 +1,5 @@
 #pragma once
-// SE(3) loop closure around a hole of a sheet (DESIGN.md, "The kinematic core": one closure of
+// SE(3) loop closure around a hole of a sheet (docs/DESIGN.md, "The kinematic core": one closure of
 // 6 equations per hole around a loop of faces).
 //
 // Vertex closures cover every loop of faces around a vertex. A component with b boundary

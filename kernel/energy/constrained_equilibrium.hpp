@@ -1,6 +1,6 @@
 #pragma once
 // Equilibria of the crease-spring energy on the loop-closure manifold, and their stability
-// (DESIGN.md kernel/energy; issue 14 item 2). No symmetry is imposed: the unknowns are all
+// (docs/DESIGN.md kernel/energy). No symmetry is imposed: the unknowns are all
 // free fold angles x of a ClosureSystem, the constraints its residual r(x) = 0.
 //
 // Method: projected Newton on the manifold. At a point x on the manifold (r(x) = 0 to the

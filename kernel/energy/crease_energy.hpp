@@ -1,5 +1,5 @@
 #pragma once
-// Crease-spring energy of a crease pattern (seed 004 eqs 2.9, 3.7; DESIGN.md kernel/energy):
+// Crease-spring energy of a crease pattern (seed 004 eqs 2.9, 3.7; docs/DESIGN.md kernel/energy):
 //
 //     E(rho) = sum_e 1/2 k_e (rho_e - rhobar_e)^2
 //

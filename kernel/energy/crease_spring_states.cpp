@@ -18,6 +18,15 @@ CreaseSpringStates crease_spring_states(const CreasePattern& pattern, const Topo
   const int starts = problem.search.random_starts;
   if (starts < 0 || starts > kMaxSpringStateStarts)
     throw InputError("starts", "must be between 0 and " + std::to_string(kMaxSpringStateStarts));
+  // The energy is searched over the states of a sheet folded from flat: a sheet with holes (a
+  // tube, a thick FOLD's slabs) has no flat state of its own, so it is refused as input here
+  // rather than by the closure system as an internal error.
+  int holes = 0;
+  for (const Component& c : topology.components) holes += c.holes;
+  if (holes > 0)
+    throw InputError("pattern", "has " + std::to_string(holes) +
+                                    " hole(s) (a tube, or a thick FOLD): the energy model needs a sheet that folds from flat; "
+                                    "`check` and `trace` handle sheets with holes from their given state");
   const ClosureSystem system(pattern, topology);
   if (system.num_unknowns() > kMaxSpringStateFreeCreases)
     throw InputError("pattern", std::to_string(system.num_unknowns()) + " free creases; the energy search takes at most " +

@@ -1,6 +1,6 @@
 #pragma once
 // The stable states of a crease pattern with torsional springs at its creases: the one kernel
-// entry behind `rigidfold energy` and the Python rigidfold.stable_states (issue 14 item 2).
+// entry behind `rigidfold energy` and the Python rigidfold.stable_states.
 // It checks the problem (size, stiffnesses, rest state), then runs the multistart search of
 // stable_state_search.hpp on the loop-closure manifold with no symmetry imposed. With
 // CreaseSpringProblem::barriers it also runs minimum_energy_path.hpp between pairs of the

@@ -41,8 +41,13 @@ VertexHeightLoad load_from_spec(const nlohmann::ordered_json& spec, const Crease
     throw InputError(at + "vertex", "vertex " + std::to_string(load.vertex) + " is not an interior vertex (no closed fan of faces)");
   if (!spec.contains("height")) throw InputError(at + "height", "is required");
   if (!spec["height"].is_number()) throw InputError(at + "height", "must be a number (length)");
-  load.height = spec["height"].get<double>();
-  if (!std::isfinite(load.height)) throw InputError(at + "height", "must be finite");
+  const double height_in_file_units = spec["height"].get<double>();
+  if (!std::isfinite(height_in_file_units)) throw InputError(at + "height", "must be finite");
+  // The kernel works on the pattern normalised by 2^length_exponent (length_scale.hpp): the
+  // height is a length of the file, so it is normalised with it.
+  load.height = std::ldexp(height_in_file_units, -pattern.length_exponent);
+  if (!std::isfinite(load.height) || (load.height == 0.0) != (height_in_file_units == 0.0))
+    throw InputError(at + "height", "cannot be expressed at the pattern's scale (2^" + std::to_string(pattern.length_exponent) + ")");
   if (const auto it = spec.find("supports"); it != spec.end()) {
     if (!it->is_array()) throw InputError(at + "supports", "must be an array of edge indices");
     for (std::size_t i = 0; i < it->size(); ++i) {

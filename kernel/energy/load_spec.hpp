@@ -6,7 +6,9 @@
 //
 //   vertex    an interior vertex (0-based index into vertices_coords)
 //   height    the prescribed height of that vertex above the plane of the supports, in the
-//             pattern's length units (finite; > 0 on the side the folded faces' normals point to)
+//             file's length units (finite; > 0 on the side the folded faces' normals point to);
+//             VertexHeightLoad::height holds it in the kernel's normalised units
+//             (length_scale.hpp), so multiply by 2^length_exponent to report it
 //   supports  creases of that vertex whose far ends rest on the plane (optional; default: its
 //             valley creases, the waterbomb's supports); at least 3, each once
 // Force control ("force") is not supported: refused with that message. Unknown keys are refused.

@@ -1,7 +1,7 @@
 #pragma once
 // Minimum-energy path and barrier between two stable states of a crease-spring pattern, on
-// the loop-closure manifold, no symmetry imposed (issue 14, "Waterbomb bistability": the
-// barriers both ways).
+// the loop-closure manifold, no symmetry imposed (the barriers both ways, for
+// waterbomb bistability).
 //
 // Method.
 //   1. String method with a climbing image (E, Ren & Vanden-Eijnden 2007; Henkelman et al.

@@ -1,6 +1,6 @@
 #pragma once
-// Stable states of a crease-spring pattern by multistart (issue 14: the general
-// `rigidfold energy`, no pattern-specific code): the energy is minimised on the loop-closure
+// Stable states of a crease-spring pattern by multistart (the general `rigidfold energy`,
+// no pattern-specific code): the energy is minimised on the loop-closure
 // manifold (constrained_equilibrium.hpp) from
 //   - the rest state itself (projected onto the manifold: it need not close exactly), and
 //   - `random_starts` random fold states that respect the letters (M < 0, V > 0, U either

@@ -1,6 +1,6 @@
 #pragma once
 // Displacement control of one interior vertex above a support plane, with the reaction
-// force as Lagrange multipliers (issue 14 item 3; seed 004's load case, no symmetry imposed).
+// force as Lagrange multipliers (seed 004's load case, no symmetry imposed).
 //
 // Model: the vertex of `load.vertex` is pressed against a plane on which the far ends of the
 // support creases rest (frictionless, bilateral point supports: a support may slide in the

@@ -1,6 +1,6 @@
 #pragma once
 // Global facet interference of a folded state: pairs of faces that pass through each other
-// (DESIGN.md, "Foldability verdict": local = a fold passing +-pi, global = faces
+// (docs/DESIGN.md, "Foldability verdict": local = a fold passing +-pi, global = faces
 // intersecting; a BVH over the faces).
 //
 // Broad phase: FCL's dynamic AABB tree (Debian libfcl-dev), one object per face.

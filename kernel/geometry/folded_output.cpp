@@ -1,4 +1,5 @@
 #include "kernel/geometry/folded_output.hpp"
+#include "kernel/math/cross2.hpp"
 #include "kernel/pattern/length_scale.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -6,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -56,7 +58,6 @@ std::string folded_obj(const CreasePattern& pattern, const FoldedGeometry& folde
 
 namespace {
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 void put_u32(std::string& out, std::uint32_t x) {
   for (int k = 0; k < 4; ++k) out += static_cast<char>((x >> (8 * k)) & 0xffu);
@@ -66,6 +67,34 @@ void put_f32(std::string& out, double x) {
   std::uint32_t bits;
   std::memcpy(&bits, &f, sizeof bits);
   put_u32(out, bits);  // little-endian whatever the host's byte order
+}
+
+// STL holds float32 coordinates: a pattern whose coordinates (the file's units) pass float32's
+// largest value would be written as inf, and one smaller than float32's normal range keeps
+// 24 significant bits of its size (so its details) only down to 2^-126 * 2^24 = 2e-31; at
+// 1e-300 every vertex would round to 0. Such a pattern is refused (std::invalid_argument, exit
+// 2), naming why, instead of writing a file that does not hold it.
+void check_float32_range(const std::vector<Eigen::Vector3d>& points) {
+  double largest = 0.0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Eigen::Vector3d& x : points) {
+    largest = std::max(largest, x.cwiseAbs().maxCoeff());
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  char text[160];
+  if (!(largest <= std::numeric_limits<float>::max())) {
+    std::snprintf(text, sizeof text, "STL: coordinates up to %.3g (the file's units) do not fit float32 (largest %.3g): "
+                  "rescale the pattern first", largest, static_cast<double>(std::numeric_limits<float>::max()));
+    throw std::invalid_argument(text);
+  }
+  const double size = points.empty() ? 0.0 : (hi - lo).maxCoeff();
+  const double smallest = std::ldexp(static_cast<double>(std::numeric_limits<float>::min()), 24);
+  if (!points.empty() && size < smallest) {
+    std::snprintf(text, sizeof text, "STL: the model's size %.3g (the file's units) is below what float32 holds to its "
+                  "precision (%.3g): rescale the pattern first", size, smallest);
+    throw std::invalid_argument(text);
+  }
 }
 
 }  // namespace
@@ -146,6 +175,11 @@ std::string folded_stl(const CreasePattern& pattern, const FoldedGeometry& folde
     triangle_face.insert(triangle_face.end(), t.size(), f);
   }
   if (triangles.size() >= (std::size_t{1} << 32)) throw std::invalid_argument("STL: 2^32 triangles or more");
+  std::vector<Eigen::Vector3d> corners;  // every triangle's corners, placed, in the file's units
+  corners.reserve(3 * triangles.size());
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    for (int v : triangles[k]) corners.push_back(to_file_units(pattern, folded.face_motions[triangle_face[k]] * pattern.vertices[v]));
+  check_float32_range(corners);
   std::string out(80, ' ');
   const std::string title = "rigidfold folded state (binary STL, float32 little-endian)";  // not "solid...": not ASCII STL
   out.replace(0, title.size(), title);
@@ -156,10 +190,8 @@ std::string folded_stl(const CreasePattern& pattern, const FoldedGeometry& folde
     const Eigen::Isometry3d& motion = folded.face_motions[f];
     const Eigen::Vector3d normal = (motion.linear() * newell_normal(pattern, pattern.faces[f])).normalized();
     for (int i = 0; i < 3; ++i) put_f32(out, normal[i]);
-    for (int v : triangles[k]) {
-      const Eigen::Vector3d x = to_file_units(pattern, motion * pattern.vertices[v]);
-      for (int i = 0; i < 3; ++i) put_f32(out, x[i]);
-    }
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 3; ++i) put_f32(out, corners[3 * k + c][i]);
     out += '\0';
     out += '\0';
   }
@@ -191,6 +223,10 @@ std::string polygons_stl(const std::vector<std::vector<Eigen::Vector3d>>& polygo
     }
   }
   if (triangles.size() >= (std::size_t{1} << 32)) throw std::invalid_argument("STL: 2^32 triangles or more");
+  std::vector<Eigen::Vector3d> corners;
+  corners.reserve(3 * triangles.size());
+  for (const auto& t : triangles) corners.insert(corners.end(), t.begin(), t.end());
+  check_float32_range(corners);
   std::string out(80, ' ');
   out.replace(0, std::min<std::size_t>(title.size(), 80), title.substr(0, 80));
   out.reserve(84 + 50 * triangles.size());

@@ -15,7 +15,7 @@
 // joint with a sign and an offset: t_i = sign * q_j + offset. Two linkages that name the same
 // network joint share that revolute axis (the seed's coaxial joints, e.g. (2-23)
 // theta_2^a = theta_2^b); sign -1 expresses the seed's (2-15) theta_2^a = -theta_2^b.
-// Origami reading (DESIGN.md): the seed's theta is mountain-positive, so the fold angle of
+// Origami reading (docs/DESIGN.md): the seed's theta is mountain-positive, so the fold angle of
 // the crease of joint j is rho = -q_j (both loops are invariant under t -> -t).
 #include <string>
 #include <vector>

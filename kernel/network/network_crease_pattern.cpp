@@ -1,4 +1,5 @@
 #include "kernel/network/network_crease_pattern.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -18,7 +19,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kAngleTolerance = 1e-9;  // (2-32), (2-33), radians
 constexpr double kFlatFold = 1e-12;       // |rho| at or below: letter F
 

@@ -1,6 +1,6 @@
 #pragma once
 // The precision a file's coordinates were written with, read off the numbers themselves
-// (issue 12, "tolerance from the input"): a pattern exported with 6 decimals carries sector
+// (the tolerance comes from the input): a pattern exported with 6 decimals carries sector
 // angles known to ~1e-6 and cannot be judged in exact arithmetic.
 //
 // Method: each coordinate c is given the fewest decimal places d (0..17; none: the file is

@@ -20,8 +20,8 @@ inline constexpr int kMaxJsonDepth = 512;
 // values, steps x (edges + 3 x vertices + 16 x faces): every step keeps its fold angles,
 // placed vertices and face motions, and --out writes them all. Measured (Release): 5000
 // steps of the 4 x 4 Miura (1.9e6 values) take 0.95 s and 89 MB (~47 bytes a value, so the
-// limit is ~1.4 GB). 3e7 and not less: issue 11's 30-step trace of a 100 x 100 Miura stores
-// 6.3e6 values (5e6 refused it).
+// limit is ~1.4 GB). 3e7 and not less: the peer comparison's 30-step trace of a
+// 100 x 100 Miura (docs/benchmarks.md) stores 6.3e6 values (5e6 refused it).
 inline constexpr int kMaxTraceSteps = 10000;
 inline constexpr std::int64_t kMaxTraceStepValues = 30000000;
 

@@ -41,9 +41,13 @@ struct DuplicateKey {
   std::string path, key;
 };
 
-// SAX handler: nlohmann's own DOM builder, with a depth count on every array and object
-// start. (Not a parser callback: nlohmann 3.11's callback parser rescans the parent array
-// after every object in it, quadratic in the array's length - 1e5 objects took 4 s.)
+// SAX handler that builds the document itself, with a depth count on every array and object
+// start and a check for keys given twice. Not nlohmann's json_sax_dom_parser, and not a
+// parser callback: both insert each key of an ordered_json object by a linear search of the
+// keys before it (ordered_map::operator[]), quadratic in the key count (200,000 keys took 97 s),
+// and the callback parser also rescans the parent array after every object in it. Keys are
+// unique here (checked in a hash set), so a key is appended without a search: reading is
+// linear in the input.
 template <class Json>
 class DepthLimitedDom {
  public:
@@ -53,43 +57,46 @@ class DepthLimitedDom {
   using string_t = typename Json::string_t;
   using binary_t = typename Json::binary_t;
 
-  explicit DepthLimitedDom(Json& root) : dom_(root, true) {}
-  bool null() { return value(), dom_.null(); }
-  bool boolean(bool v) { return value(), dom_.boolean(v); }
-  bool number_integer(number_integer_t v) { return value(), dom_.number_integer(v); }
-  bool number_unsigned(number_unsigned_t v) { return value(), dom_.number_unsigned(v); }
-  bool number_float(number_float_t v, const string_t& text) { return value(), dom_.number_float(v, text); }
-  bool string(string_t& v) { return value(), dom_.string(v); }
-  bool binary(binary_t& v) { return value(), dom_.binary(v); }
+  explicit DepthLimitedDom(Json& root) : root_(root) {}
+  bool null() { return put(Json(nullptr)); }
+  bool boolean(bool v) { return put(Json(v)); }
+  bool number_integer(number_integer_t v) { return put(Json(v)); }
+  bool number_unsigned(number_unsigned_t v) { return put(Json(v)); }
+  bool number_float(number_float_t v, const string_t&) { return put(Json(v)); }
+  bool string(string_t& v) { return put(Json(std::move(v))); }
+  bool binary(binary_t& v) { return put(Json::binary(std::move(v))); }
   bool key(string_t& v) {
     // JSON allows a key twice in one object, but which value is meant is then ambiguous
     // (nlohmann keeps the last): refused, like a syntax error.
     Level& top = levels_.back();
     if (!top.keys.insert(v).second) throw DuplicateKey{path_to(v), v};
     top.key = v;
-    return dom_.key(v);
+    slot_ = &append_member(*open_.back(), v);
+    return true;
   }
-  bool start_object(std::size_t n) {
-    value();
+  bool start_object(std::size_t) {
+    Json* object = place(Json(nlohmann::json::value_t::object));
     enter(false);
-    return dom_.start_object(n);
+    open_.push_back(object);
+    return true;
   }
   bool end_object() {
     leave();
-    return dom_.end_object();
+    return true;
   }
-  bool start_array(std::size_t n) {
-    value();
+  bool start_array(std::size_t) {
+    Json* array = place(Json(nlohmann::json::value_t::array));
     enter(true);
-    return dom_.start_array(n);
+    open_.push_back(array);
+    return true;
   }
   bool end_array() {
     leave();
-    return dom_.end_array();
+    return true;
   }
   template <class Exception>
-  bool parse_error(std::size_t position, const std::string& token, const Exception& ex) {
-    return dom_.parse_error(position, token, ex);  // throws ex (parse_error, or out_of_range 406)
+  bool parse_error(std::size_t, const std::string&, const Exception& ex) {
+    throw ex;  // parse_error, or out_of_range 406 (a number that does not fit a double)
   }
 
  private:
@@ -101,14 +108,47 @@ class DepthLimitedDom {
     std::string key;
     std::unordered_set<std::string> keys;
   };
-  void value() {
-    if (!levels_.empty() && levels_.back().array) ++levels_.back().count;
+  // A new member of `object`, null until its value is placed. The key is known to be new.
+  static Json& append_member(Json& object, const std::string& key) {
+    auto& members = object.template get_ref<typename Json::object_t&>();
+    if constexpr (requires { typename Json::object_t::Container; }) {
+      auto& list = static_cast<typename Json::object_t::Container&>(members);  // ordered_map: a vector of pairs
+      list.emplace_back(key, Json());
+      return list.back().second;
+    } else {
+      return members.emplace(key, Json()).first->second;
+    }
+  }
+  // Puts a value where the parser is: the root, the next element of the open array, or the
+  // member whose key was just read. Returns where it now lives (stable while it is open:
+  // nothing is added to its parent until it is closed).
+  Json* place(Json&& value) {
+    if (open_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    Level& top = levels_.back();
+    if (top.array) {
+      ++top.count;
+      auto& elements = open_.back()->template get_ref<typename Json::array_t&>();
+      elements.push_back(std::move(value));
+      return &elements.back();
+    }
+    *slot_ = std::move(value);
+    return slot_;
+  }
+  bool put(Json&& value) {
+    place(std::move(value));
+    return true;
   }
   void enter(bool array) {
     if (static_cast<int>(levels_.size()) + 1 > kMaxJsonDepth) throw TooDeep{};
     levels_.push_back(Level{array, 0, {}, {}});
   }
-  void leave() { levels_.pop_back(); }
+  void leave() {
+    levels_.pop_back();
+    open_.pop_back();
+  }
   std::string path_to(const std::string& key) const {
     std::string path;
     for (std::size_t i = 0; i < levels_.size(); ++i) {
@@ -122,8 +162,10 @@ class DepthLimitedDom {
     }
     return path;
   }
-  nlohmann::detail::json_sax_dom_parser<Json> dom_;
+  Json& root_;
+  std::vector<Json*> open_;  // the open arrays and objects, outermost first
   std::vector<Level> levels_;
+  Json* slot_ = nullptr;     // the member whose key was read last
 };
 
 template <class Json>

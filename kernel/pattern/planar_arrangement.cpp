@@ -255,26 +255,52 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
   }
 
   // Edges along each segment between consecutive distinct vertices; an edge drawn twice is
-  // kept once (a conflict if the labels differ).
+  // kept once: with the label of higher priority, else the later segment's (header comment).
   struct Edge {
     int u, v, label, source;
     bool alive = true;
   };
   std::vector<Edge> edges;
   std::unordered_map<std::uint64_t, int> edge_of;
-  auto add_edge = [&](int u, int v, int label, int source) {
+  auto priority = [&](int label) {
+    return label >= 0 && label < static_cast<int>(options.label_priority.size()) ? options.label_priority[label] : 0;
+  };
+  // Where the last record of each list ends: the segment drawing it and the vertex, to
+  // extend it by that segment's next piece over the same line.
+  std::pair<int, int> conflict_end{-1, -1}, duplicate_end{-1, -1};
+  auto record = [&](std::vector<LabelConflict>& list, std::pair<int, int>& end, const LabelConflict& c, int segment, int u, int v) {
+    if (!list.empty() && end == std::pair(segment, u)) {
+      LabelConflict& last = list.back();
+      if (last.source_a == c.source_a && last.source_b == c.source_b && last.label_a == c.label_a && last.label_b == c.label_b &&
+          last.label_kept == c.label_kept) {
+        last.to = c.to;
+        ++last.pieces;
+        end.second = v;
+        return;
+      }
+    }
+    list.push_back(c);
+    end = {segment, v};
+  };
+  auto add_edge = [&](int segment, int u, int v, int label, int source) {
     const std::uint64_t key = pair_key(std::min(u, v), std::max(u, v));
     auto [it, fresh] = edge_of.emplace(key, static_cast<int>(edges.size()));
     if (fresh) {
       edges.push_back({u, v, label, source});
       return;
     }
-    const Edge& old = edges[it->second];
+    Edge& old = edges[it->second];
+    LabelConflict c{old.source, source, old.label, label, old.label, position[u], position[v], 1};
     if (old.label == label) {
       ++out.duplicate_edges;
-    } else {
-      out.conflicts.push_back({old.source, source, old.label, label, position[u], position[v]});
+      record(out.duplicates, duplicate_end, c, segment, u, v);
+      return;
     }
+    if (priority(label) >= priority(old.label)) {
+      old.label = c.label_kept = label;
+      old.source = source;
+    }
+    record(out.conflicts, conflict_end, c, segment, u, v);
   };
   for (int k = 0; k < n; ++k) {
     auto& list = splits[k];
@@ -282,7 +308,7 @@ PlanarArrangement build_planar_arrangement(const std::vector<LabelledSegment>& i
     int prev = -1;
     for (const auto& [t, p] : list) {
       const int r = root[p];
-      if (prev >= 0 && r != prev) add_edge(prev, r, s[k].label, s[k].source);
+      if (prev >= 0 && r != prev) add_edge(k, prev, r, s[k].label, s[k].source);
       prev = r;
     }
   }

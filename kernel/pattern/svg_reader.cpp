@@ -31,6 +31,7 @@ namespace {
 constexpr std::string_view kSvgNamespace = "http://www.w3.org/2000/svg";
 constexpr char kNamespaceSeparator = '|';
 constexpr int kMaxListedWarnings = 10;
+constexpr int kMaxListedMerges = 10;  // warnings about lines drawn twice (the summary lists all)
 
 using Affine = Eigen::Matrix3d;  // homogeneous 2D affine map, last row (0 0 1)
 
@@ -723,6 +724,80 @@ const char* letter_name(Assignment a) {
   return "?";
 }
 
+std::string fmt_point(const Eigen::Vector2d& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; }
+
+std::string fold_angle_text(const std::optional<double>& a) {
+  return a ? fmt(*a * 180 / std::numbers::pi) + " deg" : std::string("none");
+}
+
+// Lines drawn twice (svg_reader.hpp): the arrangement's records grouped by pair of elements
+// and letters into summary.merged_lines (letter conflicts first, then duplicates, each in
+// the order met), and their warnings, at most kMaxListedMerges of them and a tally.
+std::vector<std::string> merged_lines(const PlanarArrangement& arr, const SvgParser& parser, const std::string& source,
+                                      SvgImportSummary& summary) {
+  struct Group {
+    const LabelConflict* first;
+    int stretches = 0, pieces = 0;
+  };
+  std::vector<Group> groups;
+  std::map<std::array<int, 5>, std::size_t> index;
+  for (const auto* list : {&arr.conflicts, &arr.duplicates})
+    for (const LabelConflict& c : *list) {
+      const std::array<int, 5> key = {c.source_a, c.source_b, c.label_a, c.label_b, c.label_kept};
+      auto [it, fresh] = index.emplace(key, groups.size());
+      if (fresh) groups.push_back({&c});
+      ++groups[it->second].stretches;
+      groups[it->second].pieces += c.pieces;
+    }
+  for (const LabelConflict& c : arr.conflicts) summary.overwritten_edges += c.pieces;
+  std::vector<std::string> warnings;
+  for (const Group& g : groups) {
+    const LabelConflict& c = *g.first;
+    const Label &la = parser.labels[c.label_a], &lb = parser.labels[c.label_b], &kept = parser.labels[c.label_kept];
+    MergedLines m;
+    m.first = parser.element_names[c.source_a];
+    m.second = parser.element_names[c.source_b];
+    m.first_letter = la.assignment;
+    m.second_letter = lb.assignment;
+    m.kept_letter = kept.assignment;
+    m.first_fold_angle = la.fold_angle;
+    m.second_fold_angle = lb.fold_angle;
+    m.kept_fold_angle = kept.fold_angle;
+    m.rule = c.label_a == c.label_b ? MergedLines::Rule::Duplicate : c.label_kept == c.label_b ? MergedLines::Rule::Later : MergedLines::Rule::Outline;
+    m.from[0] = c.from.x(), m.from[1] = c.from.y();
+    m.to[0] = c.to.x(), m.to[1] = c.to.y();
+    m.stretches = g.stretches;
+    m.pieces = g.pieces;
+    summary.merged_lines.push_back(m);
+    if (static_cast<int>(warnings.size()) >= kMaxListedMerges) continue;
+    std::string w = source + ": " + (c.source_a == c.source_b ? m.first + " draws" : m.first + " and " + m.second + " draw") +
+                    " the same crease from " + fmt_point(c.from) + " to " + fmt_point(c.to) +
+                    (g.stretches > 1 ? " (and at " + std::to_string(g.stretches - 1) + " more places)" : std::string());
+    switch (m.rule) {
+      case MergedLines::Rule::Duplicate:
+        w += std::string(c.source_a == c.source_b ? " twice" : "") + ", both as " + letter_name(la.assignment) + ": merged into one edge";
+        break;
+      case MergedLines::Rule::Later:
+        if (la.assignment == lb.assignment)
+          w += " as " + std::string(letter_name(la.assignment)) + " with two opacities (fold angles " + fold_angle_text(la.fold_angle) +
+               " and " + fold_angle_text(lb.fold_angle) + "): kept " + fold_angle_text(lb.fold_angle) + " (the later line, as ORIPA's editor does)";
+        else
+          w += " as " + std::string(letter_name(la.assignment)) + " and " + letter_name(lb.assignment) + ": kept " + letter_name(lb.assignment) +
+               " (the later line, as ORIPA's editor does)";
+        break;
+      case MergedLines::Rule::Outline:
+        w += " as " + std::string(letter_name(la.assignment)) + " and " + letter_name(lb.assignment) + ": kept " + letter_name(la.assignment) +
+             " (a crease drawn over the paper's outline or a cut does not replace it)";
+        break;
+    }
+    warnings.push_back(w);
+  }
+  if (static_cast<int>(groups.size()) > kMaxListedMerges)
+    warnings.push_back(source + ": ... and " + std::to_string(groups.size() - kMaxListedMerges) +
+                       " more pairs of lines drawing the same crease, merged by the same rule (import --json lists each)");
+  return warnings;
+}
+
 // Faces outside the black boundary: where the drawing's B lines close into loops (every
 // vertex on an even number of them), a face is paper when a point just inside it lies
 // inside an odd number of those loops (so holes are not paper either). Lines overshooting
@@ -877,6 +952,9 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
   ArrangementOptions ao;
   ao.tolerance = summary.merge_tolerance;
   ao.max_candidate_pairs = kMaxSvgCandidatePairs;
+  // Lines drawn twice (svg_reader.hpp): B and C over the creases, else the later line.
+  for (const Label& l : parser.labels)
+    ao.label_priority.push_back(l.assignment == Assignment::Boundary || l.assignment == Assignment::Cut ? 1 : 0);
   auto arrange = [&] {
     try {
       return build_planar_arrangement(parser.segments, ao);
@@ -900,7 +978,7 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
     arr = arrange();
   }
   auto point = [](const Eigen::Vector2d& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; };
-  if (!arr.conflicts.empty()) {
+  if (options.strict_lines && !arr.conflicts.empty()) {
     const auto& c = arr.conflicts.front();
     const Label &la = parser.labels[c.label_a], &lb = parser.labels[c.label_b];
     const bool same_letter = la.assignment == lb.assignment;
@@ -908,6 +986,7 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
                      "draw the same crease from " + point(c.from) + " to " + point(c.to) + " " +
                          (same_letter ? "with two opacities (fold angles)" : std::string("as ") + letter_name(la.assignment) + " and " + letter_name(lb.assignment)));
   }
+  const std::vector<std::string> merge_warnings = merged_lines(arr, parser, source, summary);
   summary.crossings = arr.crossings;
   summary.touches = arr.touches;
   summary.merged_points = arr.merged_points;
@@ -990,6 +1069,7 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
   p.warnings = parser.warnings;
   if (parser.unlisted_warnings() > 0)
     p.warnings.push_back(source + ": ... and " + std::to_string(parser.unlisted_warnings()) + " more elements ignored");
+  p.warnings.insert(p.warnings.end(), merge_warnings.begin(), merge_warnings.end());
   if (arr.merged_points > 0)
     p.warnings.push_back(source + ": " + std::to_string(arr.merged_points) + " near-coincident points merged into vertices (tolerance " +
                          fmt(summary.merge_tolerance) + " = " + fmt(options.merge_tolerance) + " x pattern size " + fmt(summary.pattern_size) +
@@ -1063,6 +1143,15 @@ CreasePattern parse_svg(const std::string& text, const std::string& source, cons
                          fmt(summary.merge_tolerance) + ": lines that miss each other slightly? (import --merge-tolerance)");
   if (summary_out) *summary_out = summary;
   return p;
+}
+
+std::string_view merged_lines_rule_name(MergedLines::Rule rule) {
+  switch (rule) {
+    case MergedLines::Rule::Duplicate: return "same";
+    case MergedLines::Rule::Later: return "later";
+    case MergedLines::Rule::Outline: return "outline";
+  }
+  return "?";
 }
 
 CreasePattern read_svg(const std::string& path, const SvgReadOptions& options, SvgImportSummary* summary) {

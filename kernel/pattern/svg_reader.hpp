@@ -30,21 +30,54 @@
 //
 // Arrangement (planar_arrangement.hpp): lines are split where they cross or touch, points
 // closer than merge_tolerance x the pattern size (the diagonal of the drawn lines' bounding
-// box) become one vertex, a line drawn twice becomes one edge (drawn twice in two colours is
-// bad input naming both elements), a vertex joining two collinear edges of one colour is
-// removed, and dangling pieces (an end on no other line: overshoots, a crease stopping inside
+// box) become one vertex, a line drawn twice becomes one edge (by the rule below), a vertex
+// joining two collinear edges of one colour is removed, and dangling pieces (an end on no other line: overshoots, a crease stopping inside
 // the paper) are removed with a warning, since they divide no face and cannot fold; before
 // that, a line stopping short of a vertex by at most SvgReadOptions::loose_end_snap is joined
 // to it, with a warning (loose_end_snap.hpp). Faces
 // are derived from the plane embedding (validate_pattern.hpp); where the black lines close
 // into loops, faces outside them (closed by lines drawn past the boundary) are removed too.
 //
+// Lines drawn twice: a piece of line drawn by two elements becomes one edge, and a warning
+// names both elements, the piece, the letters and what was kept (one per pair of elements;
+// at most ten, then a count; SvgImportSummary::merged_lines lists them all, and
+// `import --json` prints that list as "merged_lines").
+// Lines that overlap only in part were split where one ends on the other, so the rule below
+// holds piece by piece: a valley drawn over half of a mountain takes that half only.
+//   - Same letter and fold angle: one edge (also counted in duplicate_edges).
+//   - Two letters, or one letter with two fold angles (opacities): the element drawn later
+//     in the file wins, with its letter and fold angle (within one element: its later
+//     segment). This is what ORIPA's editor does when a line is drawn over another (it
+//     "reduces overlaps by overwriting types": oripa.domain.cptool.LineTypeOverwriter gives
+//     the overlap the added line's type), so the file reads as ORIPA would show its lines
+//     drawn in the order of the file. A third line over the same piece meets the letter
+//     kept so far, and is warned about with the line that drew it.
+//   - Except: a boundary (B) or cut (C) line is not overwritten by a crease (M, V, F, U),
+//     whichever was drawn later (between B and C the later wins). Here this reader departs
+//     from ORIPA's editor, on purpose: B and C say where the paper is (its outline, a slit),
+//     a crease letter how to fold paper lying on both sides of a line. A crease traced
+//     over the outline (a crease drawn along an edge, the square's sides retraced in a
+//     crease colour, a "select all, change type" slip) can fold nothing there,
+//     having paper on one side only; letting it win would turn the paper's edge into a crease
+//     with one face, which validation can only treat as boundary again ("edge has one face
+//     but is assigned M") while the written FOLD would carry the crease letter on the
+//     outline. A user who draws over the outline expects the outline to stay. The same holds
+//     inside the paper: a crease over a slit leaves the slit (a crease cannot join cut paper).
+// SvgReadOptions::strict_lines refuses instead, as before this rule: a piece drawn with two
+// letters or two fold angles is bad input naming both elements and the first such stretch
+// of line (consecutive pieces the two draw together), e.g.
+//   "CP.svg: <line> #1 (line 3) and <line> #2 (line 4): draw the same crease from (0, 5) to
+//    (10, 5) as mountain and valley"
+// (a piece drawn twice with one letter and fold angle is still one edge, with its warning).
+//
 // Bad input: InputError naming the file and the element, e.g.
 //   "CP.svg: <path> #12 (line 40): d: curve command 'C' is not a straight crease".
 // XML: parsed by Expat; a document type with an internal subset (where entities are declared:
 // "billion laughs") and any entity reference other than XML's five are refused. Limits:
 // input_limits.hpp (file size, element nesting depth, elements, segments).
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel/pattern/crease_pattern.hpp"
@@ -64,7 +97,28 @@ struct SvgReadOptions {
   // Origami Simulator's vertex tolerance (vertTol = 3), at most 1e-2 of the pattern size.
   // 0: no snapping (such pieces are removed as dangling).
   double loose_end_snap = 3.0;
+  // Refuse a piece drawn with two letters or fold angles instead of keeping one of them
+  // ("Lines drawn twice" above).
+  bool strict_lines = false;
 };
+
+// Two lines (elements) drawing the same piece of line, merged into one edge ("Lines drawn
+// twice" above): one record per pair of lines and letters.
+struct MergedLines {
+  enum class Rule {
+    Duplicate,  // same letter and fold angle: one edge
+    Later,      // two letters or fold angles: the later line's kept
+    Outline,    // a crease drawn later over a B or C line: the B or C line kept
+  };
+  std::string first, second;  // the lines as messages name them, in the order drawn ("<line> #2 (line 5)")
+  Assignment first_letter = Assignment::Boundary, second_letter = Assignment::Boundary, kept_letter = Assignment::Boundary;
+  std::optional<double> first_fold_angle, second_fold_angle, kept_fold_angle;  // radians
+  Rule rule = Rule::Duplicate;
+  double from[2] = {0, 0}, to[2] = {0, 0};  // the first stretch they share, SVG user units (y down)
+  int stretches = 0;  // separate stretches they share (a polyline over a polyline: several)
+  int pieces = 0;     // edges in them (lines crossing a stretch split it into several)
+};
+std::string_view merged_lines_rule_name(MergedLines::Rule rule);  // "same", "later", "outline"
 
 struct SvgImportSummary {
   int elements = 0;                // XML elements in the file
@@ -79,7 +133,9 @@ struct SvgImportSummary {
   int touches = 0;                 // line ends met on another line (T-junctions, overlaps)
   int merged_points = 0;           // distinct points merged into another vertex
   double max_merge_distance = 0;   // largest move of a point onto its vertex, user units
-  int duplicate_edges = 0;
+  int duplicate_edges = 0;         // pieces drawn twice with one letter and fold angle
+  int overwritten_edges = 0;       // pieces drawn with two letters or fold angles, one kept
+  std::vector<MergedLines> merged_lines;  // each pair of lines drawing a piece twice
   int collinear_vertices_removed = 0;
   int zero_length_segments = 0;
   double loose_end_snap = 0;       // the snap distance used, user units

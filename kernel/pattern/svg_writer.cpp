@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "kernel/geometry/flat_development.hpp"
@@ -77,8 +79,20 @@ std::string write_svg_string(const CreasePattern& input, const std::string& sour
   Eigen::Vector2d lo = xy[p.edges[0][0]], hi = lo;
   for (const auto& e : p.edges)
     for (int v : e) lo = lo.cwiseMin(xy[v]), hi = hi.cwiseMax(xy[v]);
-  const double size = (hi - lo).norm();
+  // hypot: the diagonal of a pattern of side 1e300 stays finite (the squared norm would not).
+  const double size = std::hypot(hi.x() - lo.x(), hi.y() - lo.y());
   const double margin = 0.02 * size;
+  // Every number written must be finite and the drawing must keep its size: a viewBox or
+  // stroke width of inf, or a pattern below the range of doubles' full precision, is refused.
+  if (!std::isfinite(lo.x() - margin) || !std::isfinite(lo.y() - margin) || !std::isfinite(hi.x() - lo.x() + 2 * margin) ||
+      !std::isfinite(hi.y() - lo.y() + 2 * margin))
+  {
+    char text[128];
+    std::snprintf(text, sizeof text, "SVG: the pattern's size (%.3g in the file's units) does not fit an SVG's numbers", size);
+    throw InputError(source, text);
+  }
+  if (!(size / 400 >= std::numeric_limits<double>::min()))
+    throw InputError(source, "SVG: the pattern's size in the file's units is too small for an SVG stroke width");
 
   std::string s;
   s.reserve(200 + 120 * p.edges.size());

@@ -1,4 +1,5 @@
 #include "kernel/pattern/validate_pattern.hpp"
+#include "kernel/math/cross2.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -61,7 +62,6 @@ std::vector<Eigen::Vector2d> planar_coordinates(const CreasePattern& p, const st
   return xy;
 }
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 void check_edges(const CreasePattern& p, const std::string& source) {
   const double tol = 1e-12 * pattern_size(p);

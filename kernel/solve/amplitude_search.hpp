@@ -1,6 +1,6 @@
 #pragma once
 // Least squares on the loop closure with the fold's size fixed by a norm, and each crease
-// kept on the side its letter allows (issue 12, item 1): a search for a folded state near
+// kept on the side its letter allows: a search for a folded state near
 // flat that does not presume which creases fold.
 //
 // Holding chosen "driving" creases at a value (the verdict's first search) fails on a

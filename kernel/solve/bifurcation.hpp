@@ -1,6 +1,6 @@
 #pragma once
 // Bifurcations on a 1-DOF path: locating the singular point between two path points, and
-// leaving a singular point along a tangent line (DESIGN.md, "Bifurcation").
+// leaving a singular point along a tangent line (docs/DESIGN.md, "Bifurcation").
 //
 // Locating. Between two points xa, xb of a traced 1-DOF branch whose bordered determinant
 //   g = det[Ua^T J(x); ta^T] (Ua: n-1 leading left singular vectors of J(xa), ta: unit null

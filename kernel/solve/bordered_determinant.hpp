@@ -1,6 +1,6 @@
 #pragma once
 // Bordered determinant along a 1-DOF branch: the test function of bifurcation detection
-// (DESIGN.md, "Bifurcations").
+// (docs/DESIGN.md, "Bifurcations: detection").
 //
 //   g(x) = det [ U^T J(x) ; t(x)^T ]
 // U (n x ... : m x (n-1)) holds the n-1 leading left singular vectors of J at a reference point

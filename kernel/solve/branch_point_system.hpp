@@ -1,7 +1,7 @@
 #pragma once
 // A simple branch point of a 1-DOF solution curve of the loop closure, solved as a regular
-// (non-singular) system by Gauss-Newton, with a verified error bound (DESIGN.md,
-// "Bifurcation"; issue 12 item 6).
+// (non-singular) system by Gauss-Newton, with a verified error bound (docs/DESIGN.md,
+// "Bifurcation").
 //
 // Extended system. Unknowns z = (x, c): x the n fold-angle unknowns (radians), c in R^(n-1)
 // the coordinates of a left null vector psi = U c of J(x) in a fixed orthonormal basis U

@@ -1,6 +1,6 @@
 #pragma once
 // 1-DOF pseudo-arclength continuation along the constraint manifold r(x) = 0 of a
-// ClosureSystem (DESIGN.md, "Continuation").
+// ClosureSystem (docs/DESIGN.md, "Continuation").
 //
 // At a point x_k the tangent t_k is the unit null vector of J(x_k), oriented to continue the
 // previous tangent (the first one along `direction`): from jacobian_rank (which also checks

@@ -1,6 +1,6 @@
 #pragma once
 // Newton projection onto the constraint manifold r(x) = 0 of a ClosureSystem: minimum-norm
-// Gauss-Newton steps on a redundant, rank-deficient system (DESIGN.md, "Corrector").
+// Gauss-Newton steps on a redundant, rank-deficient system (docs/DESIGN.md, "Corrector").
 //
 // Each step takes the minimum-norm Gauss-Newton step of J_f dx = r (J_f: J with the held
 // columns removed), computed from the column-side normal equations

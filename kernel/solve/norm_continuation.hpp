@@ -1,5 +1,5 @@
 #pragma once
-// Continuation of a multi-DOF closure manifold by the size of the fold (issue 12, item 1:
+// Continuation of a multi-DOF closure manifold by the size of the fold (to
 // certify a candidate by continuation back toward flat and out to a finite fold).
 //
 // A pattern with many degrees of freedom has no single curve through a folded point; the

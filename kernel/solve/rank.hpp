@@ -1,6 +1,6 @@
 #pragma once
 // Rank, degrees of freedom and null space of a constraint Jacobian J (m x n) at a point
-// (DESIGN.md, "DOF and tangent").
+// (docs/DESIGN.md, "DOF and tangent").
 //
 //   DOF = n - rank(J)   (first-order mobility: the dimension of the tangent space when the
 //                        point is regular; at a singular point, e.g. the flat state of a

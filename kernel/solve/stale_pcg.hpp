@@ -1,6 +1,6 @@
 #pragma once
 // The augmented Newton step of the continuation corrector by a Krylov solve preconditioned
-// with a stale factorisation (issue 11, "an iterative path for large systems").
+// with a stale factorisation (an iterative path for large systems).
 //
 // Problem: the step dx of the corrector's augmented linear system
 //       A dx = b,   A = [J; a^T]  ((m + 1) x n, full column rank at a regular 1-DOF point),

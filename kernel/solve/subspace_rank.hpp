@@ -1,6 +1,6 @@
 #pragma once
 // DOF, null space and the singular-value gap of a large sparse Jacobian at the cost of about
-// one sparse Cholesky factorisation, without any dense n x n operation (issue 11).
+// one sparse Cholesky factorisation, without any dense n x n operation.
 //
 // Method (block inverse subspace iteration with a Rayleigh-Ritz step on J itself):
 //   1. G = J^T J + lambda I is factorised by CHOLMOD (MinimumNormSolver, the corrector's own

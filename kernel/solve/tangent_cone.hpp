@@ -1,6 +1,6 @@
 #pragma once
 // Tangent cone of the constraint manifold r(x) = 0 at a point that may be singular
-// (DESIGN.md, "Bifurcation"): the directions in which curves of solutions leave the point.
+// (docs/DESIGN.md, "Bifurcation"): the directions in which curves of solutions leave the point.
 //
 // First order: a tangent lies in the kernel of J, t = N c (N: orthonormal kernel basis,
 //   k = dim). Second order: r(x(s)) = 0 along a curve x(s) = x + s t + s^2/2 w needs

@@ -1,4 +1,5 @@
 #include "kernel/thick/bennett_heights.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -10,7 +11,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Staircase heights (relative, per fan crease) starting at crease `start`.
 std::vector<double> staircase(const std::vector<double>& sectors, int start, double thickness) {

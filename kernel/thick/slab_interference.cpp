@@ -1,4 +1,5 @@
 #include "kernel/thick/slab_interference.hpp"
+#include "kernel/math/cross2.hpp"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -23,7 +24,6 @@ namespace rigidfold {
 
 namespace {
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // One shrunk slab in its panel's flat frame: polygon (counter-clockwise seen from +z) and
 // z range, plus its FCL mesh.

@@ -1,5 +1,5 @@
 #pragma once
-// Slab-slab interference of a thick sheet at a list of fold states (issue 15 item 5): every
+// Slab-slab interference of a thick sheet at a list of fold states: every
 // panel's slab (panel_slab.hpp) placed by the rigid motion of its face of the thick sheet,
 // every pair of slabs tested with FCL (broad phase: dynamic AABB tree; narrow phase: exact
 // triangle-triangle tests of the two closed slab meshes, plus a point-in-slab test for a slab

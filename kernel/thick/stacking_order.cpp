@@ -1,4 +1,5 @@
 #include "kernel/thick/stacking_order.hpp"
+#include "kernel/math/cross2.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +15,6 @@ namespace {
 
 using Poly = std::vector<Eigen::Vector2d>;
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 double signed_area(const Poly& p) {
   double a = 0;

@@ -1,6 +1,6 @@
 #pragma once
 // Stacking order of a thick sheet's panels at one fold state, meant for the fully folded end
-// of its path (issue 15 item 5): which panel lies on which side of which.
+// of its path: which panel lies on which side of which.
 //
 // Two views, both from the slabs (panel_slab.hpp) placed by their faces of the thick sheet:
 //   - per crease: for hinge e between panels a and b, the side of a's plane on which b's

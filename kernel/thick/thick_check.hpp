@@ -1,5 +1,5 @@
 #pragma once
-// `rigidfold check` and `rigidfold trace` on a thick FOLD (issue 15 Build item 6): the file that
+// `rigidfold check` and `rigidfold trace` on a thick FOLD: the file that
 // `rigidfold thick --out` writes - the thick sheet of thick_sheet_from_hinge_heights at its flat
 // state (vertices truncated into holes, hinge edges at their heights, 3D) with the extension keys
 //   "rigidfold:thickness":     one number per face (> 0, file units), its panel's slab thickness;

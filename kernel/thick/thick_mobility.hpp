@@ -1,5 +1,5 @@
 #pragma once
-// Where thickness breaks motion (issue 15 item 4): a thick pattern with hinges on panel
+// Where thickness breaks motion: a thick pattern with hinges on panel
 // faces (hinge_heights.hpp) checked like any other, with the vertices that lock named.
 //
 // At a closed state x of the thick sheet's ClosureSystem (one SE(3) loop per thick vertex):

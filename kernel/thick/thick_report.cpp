@@ -1,4 +1,5 @@
 #include "kernel/thick/thick_report.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,6 @@ namespace rigidfold {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 std::vector<double> placement_heights(const CreasePattern& flat, const Topology& topology, double t, ThickHinges hinges) {
   std::vector<double> h(flat.num_edges(), 0.0);

@@ -1,5 +1,5 @@
 #pragma once
-// The thick-panel front door (issue 15 item 6): a flat crease pattern, one panel thickness
+// The thick-panel front door: a flat crease pattern, one panel thickness
 // and a hinge placement in, a checked report out - the thick sheet, its mobility at the flat
 // state, and (when it moves) a short trace from flat compared with the zero-thickness motion.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The `rigidfold thick` command's one kernel call (issue 15 item 6): every check on the
+// The `rigidfold thick` command's one kernel call: every check on the
 // user's input and on the answers, so that the command line only parses, calls this and
 // prints.
 //

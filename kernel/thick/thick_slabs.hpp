@@ -1,5 +1,5 @@
 #pragma once
-// Thick panels as solid geometry (issue 15 item 5, in part): each panel of a thick sheet
+// Thick panels as solid geometry: each panel of a thick sheet
 // (thick_report.hpp) as a closed slab - its flat polygon at the slab's bottom and top
 // heights plus one side wall per polygon side - placed at a fold state by the rigid motion
 // of its face of the thick sheet (place_faces on the sheet), for writing as STL

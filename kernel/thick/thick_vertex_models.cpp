@@ -1,4 +1,5 @@
 #include "kernel/thick/thick_vertex_models.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +8,6 @@
 namespace rigidfold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // One joint per crease; the seed's per-joint map theta = offset + s * phi in terms of rho.
 ThickPattern single_loop(const std::string& name, const std::vector<int>& mountain_valley,

@@ -1,6 +1,6 @@
 #pragma once
-// The thick-panel vertices of seed 003 ch. 4 (digest: shared/notes/seed-003-spherical-linkages.md
-// sections 3.6-3.9): a zero-thickness vertex and the overconstrained spatial linkage whose
+// The thick-panel vertices of seed 003 ch. 4 (docs/REFERENCES.md (seed 003); its corrections
+// in docs/errata.md): a zero-thickness vertex and the overconstrained spatial linkage whose
 // panel thicknesses make it fold with the same fold angles.
 //
 //   Bennett (4 creases, flat-foldable: alpha_34 = pi - alpha_12, alpha_41 = pi - alpha_23)

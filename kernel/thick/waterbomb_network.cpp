@@ -1,4 +1,5 @@
 #include "kernel/thick/waterbomb_network.hpp"
+#include "kernel/math/angle_units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -11,7 +12,6 @@ namespace rigidfold {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 bool near(double a, double b) { return std::abs(a - b) < 1e-9; }
 

@@ -25,7 +25,7 @@
 //                           (a rotation by +psi about +z); psi in [-pi/2, pi/2], > 0 when
 //                           alpha1 < alpha2, even in theta, exactly 0 when alpha1 == alpha2.
 // Together a_hat = (cos phi, cos phi tan psi, sin phi) / norm. Note: psi is the seed's
-// definition (eq. 39 with the arctan, DESIGN.md). It jumps from +-pi/2 to -+pi/2 where
+// definition (eq. 39 with the arctan, docs/DESIGN.md). It jumps from +-pi/2 to -+pi/2 where
 // a_x changes sign (|phi| passes pi/2, which happens only when both alpha > pi/4); use
 // spinal_out or miura_vertex_rotation there, they are continuous.
 //

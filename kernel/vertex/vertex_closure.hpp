@@ -1,7 +1,7 @@
 #pragma once
 // Loop closure of one vertex (spherical linkage): product, residual, exact Jacobian.
 //
-// Convention (the kernel's, see DESIGN.md):
+// Convention (the kernel's, see docs/DESIGN.md):
 //   A vertex of degree n has creases 0..n-1 ordered counter-clockwise seen from +z
 //   (the papers' creases 1..n), sector i lies between crease i and crease i+1 (mod n).
 //   The loop closes when

@@ -1,6 +1,6 @@
 #pragma once
 // Second-order term of one vertex's loop closure along a direction: the curvature that the
-// tangent cone of a singular point is built from (DESIGN.md, "Bifurcation").
+// tangent cone of a singular point is built from (docs/DESIGN.md, "Bifurcation").
 //
 // With R(s) = prod_i Rx(rho_i + s t_i) Rz(alpha_i) (vertex_closure.hpp convention) and
 // r(s) = log R(s), returns r''(0) = D^2 r(rho)[t, t].

@@ -101,8 +101,9 @@ void bind_analysis(py::module_& m) {
       py::arg("pattern"), py::arg("use_assignment") = true, py::arg("force_general") = false,
       py::arg("explore_branches") = true, py::arg("source") = "pattern", py::arg("coordinate_tolerance") = py::none(),
       "Rigid-foldability verdict (the kernel's check_foldability) as a dict, the object `rigidfold check --json` "
-      "prints (without its 'file' key): verdict_class (foldable; foldable within the input's precision; not "
-      "foldable (proof); not foldable (evidence); undecided), verdict, rigidly_foldable, is_proof, dof, reason, "
+      "prints (without its 'file' key): verdict_class (foldable; foldable within the input's precision; foldable "
+      "only in part; not foldable (proof); not foldable (evidence); undecided), verdict, rigidly_foldable, is_proof, "
+      "folds_in_part, dof, reason, "
       "model, model_choice, branches, bifurcations, obstruction, max_residual (rad), tolerances, seconds.\n"
       "use_assignment=False ignores the M-V letters; force_general skips multiplier propagation; source names "
       "the pattern in error messages; coordinate_tolerance (`check --tolerance`): how far each coordinate may lie "

@@ -1,4 +1,4 @@
-// Energy bindings: the stable states of any pattern with crease springs (issue 14), the object
+// Energy bindings: the stable states of any pattern with crease springs, the object
 // `rigidfold energy --json` prints (kernel/energy/crease_spring_states.hpp, app/energy_json.hpp).
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>

@@ -116,8 +116,14 @@ void bind_vertex(py::module_& m) {
       .def_property_readonly("free_edges", [](const PatternClosure& c) { return c.system.free_edges(); },
                              "edge index of each unknown, increasing")
       .def(
-          "vertex_of_block", [](const PatternClosure& c, int k) { return c.system.vertex_of_block(k); },
-          py::arg("k"), "vertex index of row block k (rows 3k..3k+2)")
+          "vertex_of_block",
+          [](const PatternClosure& c, long long k) {
+            if (k < 0 || k >= c.system.num_vertices())
+              throw py::index_error("vertex_of_block: block " + std::to_string(k) + " out of range [0, " +
+                                    std::to_string(c.system.num_vertices()) + ")");
+            return c.system.vertex_of_block(static_cast<int>(k));
+          },
+          py::arg("k"), "vertex index of row block k (rows 3k..3k+2); IndexError outside [0, num_vertices)")
       .def(
           "unknowns_from_edges",
           [](const PatternClosure& c, const Eigen::VectorXd& rho) {

@@ -102,3 +102,15 @@ def test_error_classes():
     assert issubclass(rigidfold.NoAnswerError, RuntimeError)
     with pytest.raises(ValueError, match="theta_limit"):
         rigidfold.miura_vertex(math.radians(50), math.radians(70), math.radians(80))  # beyond theta_limit
+
+
+def test_vertex_of_block_checks_its_index():
+    """An index outside [0, num_vertices) raises IndexError (it read out of bounds, or crashed
+    the interpreter, before)."""
+    system = rigidfold.ClosureSystem(rigidfold.square_twist("type2m"))
+    n = system.num_vertices
+    assert n > 0
+    assert all(0 <= system.vertex_of_block(k) for k in range(n))
+    for bad in (-1, n, 10**9, -(10**12), 2**40):
+        with pytest.raises(IndexError):
+            system.vertex_of_block(bad)

@@ -1,4 +1,4 @@
-"""Issue 12, acceptance 1: every FOLD and SVG of ../shared/corpus gets a verdict that agrees with an
+"""Every FOLD and SVG of tests/data/corpus gets a verdict that agrees with an
 independent check written here.
 
 The check shares no code with the kernel's solvers: only the file reader (rigidfold.load: vertices,
@@ -58,8 +58,7 @@ What is compared, per verdict class (the kernel's `check FILE --json`):
 - undecided: the kernel must not call it a proof (is_proof false); our search's least residual is
   printed, not asserted.
 
-The corpus lives beside the project (SOURCE_DIR/../shared/corpus); CI clones have none, and then
-this module is skipped. Every file is checked (hypar.svg, undecided, was skipped while `check` took
+The corpus is in the tree (tests/data/corpus, each folder with its project's licence). Every file is checked (hypar.svg, undecided, was skipped while `check` took
 17-30 s on it; it takes ~2 s now).
 
 Found earlier (was a strict xfail): BoxPleatSpiralPyramid.fold got "not foldable (evidence)", but
@@ -83,10 +82,7 @@ import pytest
 import rigidfold
 from conftest import SOURCE_DIR, cli_path
 
-CORPUS = os.path.abspath(os.path.join(SOURCE_DIR, "..", "shared", "corpus"))
-if not os.path.isdir(CORPUS):
-    pytest.skip(f"no crease-pattern corpus at {CORPUS} (CI clones have none): the independent check "
-                "of the corpus verdicts is skipped", allow_module_level=True)
+CORPUS = os.path.join(SOURCE_DIR, "tests", "data", "corpus")
 
 from scipy.optimize import least_squares  # noqa: E402  (after the skip: scipy is only needed here)
 from scipy.sparse import csr_matrix, identity  # noqa: E402
@@ -95,7 +91,7 @@ from scipy.sparse.linalg import splu  # noqa: E402
 CLOSE_TOL = 1e-9          # a certified state must close to this (rad) at every interior vertex
 SIGN_TOL = 1e-9           # letters: M <= SIGN_TOL, V >= -SIGN_TOL
 FOUND_TOL = 1e-10         # our search "folds" a pattern when its closure gets this small
-EVIDENCE_FLOOR = 1e-9     # the issue's floor: no "not foldable" rests on a residual below this
+EVIDENCE_FLOOR = 1e-9     # the evidence floor: no "not foldable" rests on a residual below this
 
 # Files too slow for every run, skipped unless RIGIDFOLD_CORPUS_SLOW=1 (none at present).
 SLOW = {}

@@ -1,4 +1,4 @@
-"""The README's Python one-liners run as documented (issue 18: examples in the README work from a
+"""The README's Python one-liners run as documented (the examples in the README work from a
 clean clone after the set-up command). Each `PYTHONPATH=build/python /usr/bin/python3 -c "..."`
 line is run from the project root with this build's package on the path."""
 import os

@@ -62,9 +62,13 @@ TEST(StraightLineFolds, ALineOfOneLetterFoldsAloneAndCrossingLinesForbidStrictFo
   }
 
   const FoldabilityReport r = check_foldability(p, t);
-  EXPECT_EQ(r.verdict, FoldabilityClass::kFoldable) << r.reason;
+  // Strict question (the headline): crossing lettered lines, no motion folds them all.
+  EXPECT_EQ(r.verdict, FoldabilityClass::kNotFoldableProof) << r.reason;
   EXPECT_TRUE(r.is_proof);
-  EXPECT_GE(r.dof, 1);
+  EXPECT_TRUE(r.folds_in_part);
+  ASSERT_TRUE(r.obstruction.has_value());
+  EXPECT_EQ(r.obstruction->kind, "crossing lettered lines");
+  EXPECT_GE(r.dof, 1);  // of the weak motion: a line folds alone
   ASSERT_TRUE(r.strictness.has_value());
   EXPECT_FALSE(r.strictness->strict);
   EXPECT_EQ(r.strictness->strict_obstruction_vertices.size(), 4u);

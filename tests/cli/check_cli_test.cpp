@@ -99,7 +99,7 @@ TEST(CheckCli, BothModelsAgreeOnMiuraAndSquareTwists) {
   EXPECT_EQ(exact["dof"], general["dof"]);
   EXPECT_LE(general["max_residual"].get<double>(), 1e-12);
   // The general model's branches say which linear solver traced them and how many
-  // factorisations it took (issue 11); the certifying path is published, sampled, and its
+  // factorisations it took; the certifying path is published, sampled, and its
   // states close (replayable by other tools).
   ASSERT_FALSE(general["branches"].empty());
   int traced = 0;
@@ -136,7 +136,7 @@ TEST(CheckCli, BothModelsAgreeOnMiuraAndSquareTwists) {
   }
 }
 
-// The strict question answered on its own (issue 12): certified where the certificate folds
+// The strict question answered on its own: certified where the certificate folds
 // every M/V crease (the waterbomb base), disproved where straight lettered lines cross (a
 // degree-4 vertex of two straight lines, one valley and one mountain: each folds alone).
 TEST(CheckCli, SaysWhetherFoldingIsStrict) {
@@ -149,7 +149,13 @@ TEST(CheckCli, SaysWhetherFoldingIsStrict) {
   for (int e : {0, 2}) cross.assignments[e] = Assignment::Valley;
   for (int e : {1, 3}) cross.assignments[e] = Assignment::Mountain;
   const auto crossing = check(cross, "crossing");
-  EXPECT_EQ(crossing["verdict_class"], "foldable");
+  // The headline answers the strict question: no motion folds every lettered crease (proof);
+  // a line folds alone, which is said beside it.
+  EXPECT_EQ(crossing["verdict_class"], "not foldable (proof)");
+  EXPECT_EQ(crossing["is_proof"], true);
+  EXPECT_EQ(crossing["folds_in_part"], true);
+  EXPECT_EQ(crossing["obstruction"]["kind"], "crossing lettered lines");
+  EXPECT_EQ(waterbomb["folds_in_part"], false);
   EXPECT_EQ(crossing["strictness"]["strict"], false);
   EXPECT_EQ(crossing["strictness"]["flat_lettered_creases"].size(), 2u);
   EXPECT_EQ(crossing["strictness"]["strict_obstruction_vertices"], nlohmann::json::array({0}));

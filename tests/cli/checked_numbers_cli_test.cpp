@@ -1,4 +1,4 @@
-// Issue 20 on the command line: numbers checked where they enter (NaN and +-inf refused with
+// On the command line: numbers checked where they enter (NaN and +-inf refused with
 // the flag named, documented ranges closed), and no closed-form result printed without its
 // own check: over a grid reaching the ends of every range, `vertex miura`, `vertex s4r` and
 // `string forward` either print an answer whose closure residual is within tolerance
@@ -164,7 +164,7 @@ TEST(CheckedNumbersCli, NonFiniteAndOutOfRangeFlagsExitTwoNamingTheFlag) {
   std::filesystem::remove_all(dir);
 }
 
-// The issue's case: exit 0 printed rho_b = 0 (80 deg off) with a residual of 1.4 rad.
+// The regression case: exit 0 printed rho_b = 0 (80 deg off) with a residual of 1.4 rad.
 TEST(CheckedNumbersCli, MiuraTinyAlphaIsAccurate) {
   const auto r = test::run_command(test::cli() + " vertex miura --alpha1 1e-170 --alpha2 60 --theta 20 --json");
   ASSERT_EQ(r.status, 0) << r.err;

@@ -74,5 +74,18 @@ TEST(EnergyCli, BadInputExitsTwoNamingThePlace) {
   fs::remove_all(dir);
 }
 
+// A sheet with holes has no flat state to fold from: refused as input (exit 2 naming the file
+// and the holes), never an internal error. The bundled Miura tube, and a thick FOLD, each its
+// own rest state.
+TEST(EnergyCli, SheetsWithHolesAreRefusedAsInput) {
+  for (const std::string file : {kSource + "data/bundled/miura_tube_6_alpha60.fold", kSource + "data/thick/diamond_arch_6_a30_thick.fold"}) {
+    const auto r = test::run_command(test::cli() + " energy " + file + " --rest " + file);
+    EXPECT_EQ(r.status, 2) << file << ": " << r.err;
+    EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("hole"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace rigidfold

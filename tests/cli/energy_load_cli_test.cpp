@@ -50,6 +50,51 @@ TEST(EnergyLoadCli, ReactionForceEqualsTheClosedForm) {
   fs::remove_all(dir);
 }
 
+// A pattern outside [2^-20, 2^20] is normalised on reading: its load height is a length of the
+// file and is normalised with it, and the force (energy per length) comes back in the file's
+// units. The base scaled by s, held at s times the height, has the force of the unscaled base
+// over s; held at the unscaled height it cannot reach it (no loaded state, or exit 3).
+TEST(EnergyLoadCli, LoadHeightScalesWithThePattern) {
+  const fs::path dir = fs::temp_directory_path() / ("rigidfold_energy_load_scale_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  auto fold = nlohmann::json::parse(std::ifstream(kBase));
+  const double height = std::cos(kPi / 4) * std::cos(to_radians(70.0));
+  auto force_at = [&](const std::string& pattern, double h, int* status) {
+    const std::string load = (dir / "load.json").string();
+    char text[128];
+    std::snprintf(text, sizeof text, "{\"vertex\": 0, \"height\": %.17g}", h);
+    std::ofstream(load) << text;
+    const auto run = test::run_command(test::cli() + " energy " + pattern + " --rest " + kRest + " --starts 0 --json --load " + load);
+    *status = run.status;
+    std::vector<double> forces;
+    if (run.status == 0)
+      for (const auto& s : nlohmann::json::parse(run.out)["loaded"]["states"]) forces.push_back(s["force"].get<double>());
+    return forces;
+  };
+  int status = -1;
+  const auto unscaled = force_at(kBase, height, &status);
+  ASSERT_EQ(status, 0);
+  ASSERT_FALSE(unscaled.empty());
+  for (double scale : {1e-7, 1e-300, 1e300}) {
+    auto scaled = fold;
+    for (auto& v : scaled["vertices_coords"])
+      for (auto& x : v) x = x.get<double>() * scale;
+    const std::string path = (dir / "scaled.fold").string();
+    std::ofstream(path) << scaled.dump();
+    const auto forces = force_at(path, height * scale, &status);
+    ASSERT_EQ(status, 0) << scale;
+    ASSERT_EQ(forces.size(), unscaled.size()) << scale;
+    for (std::size_t i = 0; i < forces.size(); ++i)
+      EXPECT_NEAR(forces[i] * scale, unscaled[i], 1e-9 * std::max(1.0, std::fabs(unscaled[i]))) << scale;
+    if (scale < 1.0) {
+      // The unscaled height is out of reach of the small base: never an equilibrium there.
+      const auto unreachable = force_at(path, height, &status);
+      EXPECT_TRUE(status == 3 || (status == 0 && unreachable.empty())) << scale << ": status " << status;
+    }
+  }
+  fs::remove_all(dir);
+}
+
 TEST(EnergyLoadCli, BadSpecExitsTwoNamingTheJsonPath) {
   const fs::path dir = fs::temp_directory_path() / ("rigidfold_energy_loadbad_" + std::to_string(::getpid()));
   fs::create_directories(dir);

@@ -1,8 +1,10 @@
 // `rigidfold import CP.svg --out CP.fold`, and info/check/trace reading .svg directly: the
 // written FOLD reads back with the counts the import printed; bad SVGs exit 2 with one line
-// naming the file and the element.
+// naming the file and the element; a .cp with a line drawn twice imports by the later line,
+// listed under merged_lines, and --strict-lines refuses it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -32,7 +34,7 @@ class ImportCli : public ::testing::Test {
 };
 
 TEST_F(ImportCli, WritesAFoldThatReadsBackWithThePrintedCounts) {
-  if (!std::filesystem::exists(corpus("origami-simulator/waterbombBase.svg"))) GTEST_SKIP() << "no corpus";
+  ASSERT_TRUE(std::filesystem::exists(corpus("origami-simulator/waterbombBase.svg")));
   const std::string out = file("wb.fold");
   const auto r = test::run_command(test::cli() + " import " + corpus("origami-simulator/waterbombBase.svg") + " --out " + out + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -60,7 +62,7 @@ TEST_F(ImportCli, WritesAFoldThatReadsBackWithThePrintedCounts) {
 // Origami Simulator's hypar.svg draws one magenta crease 2.95 px short of its corner: joined
 // by default (3 px, Origami Simulator's vertex tolerance), removed as dangling with 0.
 TEST_F(ImportCli, LooseLineEndsAreJoinedAndReported) {
-  if (!std::filesystem::exists(corpus("origami-simulator/hypar.svg"))) GTEST_SKIP() << "no corpus";
+  ASSERT_TRUE(std::filesystem::exists(corpus("origami-simulator/hypar.svg")));
   const std::string out = file("hypar.fold");
   const std::string base = test::cli() + " import " + corpus("origami-simulator/hypar.svg") + " --out " + out + " --json";
   const auto r = test::run_command(base);
@@ -117,6 +119,76 @@ TEST_F(ImportCli, BadSvgExitsTwoNamingTheElement) {
   const auto flag = test::run_command(test::cli() + " import " + curve + " --out " + file("z.fold") + " --merge-tolerance 0.5");
   EXPECT_EQ(flag.status, 2) << flag.err;
   EXPECT_NE(flag.err.find("--merge-tolerance"), std::string::npos) << flag.err;
+}
+
+// A .cp with one crease drawn twice in two letters (kernel/pattern/svg_reader.hpp, "Lines
+// drawn twice"): `import` reads it by its content, keeps the later line's letter, warns
+// naming both lines and lists the merge under merged_lines; --strict-lines refuses it with
+// the message naming both lines and writes nothing; `info` reads it directly with the same
+// warning. A FOLD file is refused: it needs no import.
+TEST_F(ImportCli, CpWithALineDrawnTwiceListsTheMerge) {
+  const std::string cp = file("dup.cp", "1 0 0 1 0\n1 1 0 1 1\n1 1 1 0 1\n1 0 1 0 0\n2 0 0 1 1\n3 1 1 0 0\n");
+  const std::string warning = cp + ": line 5 and line 6 draw the same crease from (1, 1) to (0, 0) as mountain and valley: kept valley "
+                                   "(the later line, as ORIPA's editor does)";
+  const std::string out = file("dup.fold");
+  const auto r = test::run_command(test::cli() + " import " + cp + " --out " + out + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["format"], ".cp");
+  EXPECT_EQ(j["svg"]["elements"], 6);
+  EXPECT_EQ(j["svg"]["drawn_elements"], 6);
+  EXPECT_EQ(j["svg"]["overwritten_edges"], 1);
+  EXPECT_EQ(j["svg"]["duplicate_edges"], 0);
+  EXPECT_EQ(j["edges_by_assignment"]["V"], 1);
+  EXPECT_EQ(j["edges_by_assignment"]["B"], 4);
+  EXPECT_FALSE(j["edges_by_assignment"].contains("M"));
+  EXPECT_EQ(j["faces"], 2);
+  ASSERT_EQ(j["merged_lines"].size(), 1u);
+  const auto& m = j["merged_lines"][0];
+  EXPECT_EQ(m["lines"][0], "line 5");
+  EXPECT_EQ(m["lines"][1], "line 6");
+  EXPECT_EQ(m["assignments"][0], "M");
+  EXPECT_EQ(m["assignments"][1], "V");
+  EXPECT_EQ(m["kept"], "V");
+  EXPECT_EQ(m["rule"], "later");
+  EXPECT_TRUE(m["kept_fold_angle_deg"].is_null());  // .cp has no fold angles
+  EXPECT_DOUBLE_EQ(m["from"][0].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(m["to"][1].get<double>(), 0.0);
+  EXPECT_EQ(m["pieces"], 1);
+  EXPECT_EQ(std::count(j["warnings"].begin(), j["warnings"].end(), warning), 1) << j["warnings"].dump();
+  const CreasePattern p = read_fold(out);
+  EXPECT_EQ(p.num_edges(), 5);
+  EXPECT_EQ(std::count(p.assignments.begin(), p.assignments.end(), Assignment::Valley), 1);
+  // The text report prints the warning.
+  const auto text = test::run_command(test::cli() + " import " + cp + " --out " + out);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("  warning: " + warning + "\n"), std::string::npos) << text.out;
+  // --strict-lines: refused as before the rule, nothing written.
+  const std::string strict_out = file("strict.fold");
+  const auto strict = test::run_command(test::cli() + " import " + cp + " --out " + strict_out + " --strict-lines");
+  EXPECT_EQ(strict.status, 2) << strict.err;
+  EXPECT_NE(strict.err.find(cp + ": line 5 and line 6: draw the same crease from (1, 1) to (0, 0) as mountain and valley"), std::string::npos)
+      << strict.err;
+  EXPECT_EQ(std::count(strict.err.begin(), strict.err.end(), '\n'), 1) << strict.err;
+  EXPECT_FALSE(std::filesystem::exists(strict_out));
+  // The same crease twice in one letter: merged, listed, and not refused by --strict-lines.
+  const std::string same = file("same.cp", "1 0 0 1 0\n1 1 0 1 1\n1 1 1 0 1\n1 0 1 0 0\n3 0 0 1 1\n3 0 0 1 1\n");
+  const auto rs = test::run_command(test::cli() + " import " + same + " --out " + file("same.fold") + " --strict-lines --json");
+  ASSERT_EQ(rs.status, 0) << rs.err;
+  const auto js = nlohmann::json::parse(rs.out);
+  EXPECT_EQ(js["svg"]["duplicate_edges"], 1);
+  ASSERT_EQ(js["merged_lines"].size(), 1u);
+  EXPECT_EQ(js["merged_lines"][0]["rule"], "same");
+  // info reads the .cp directly, with the same warning.
+  const auto info = test::run_command(test::cli() + " info " + cp + " --json");
+  ASSERT_EQ(info.status, 0) << info.err;
+  const auto ji = nlohmann::json::parse(info.out);
+  EXPECT_EQ(std::count(ji["warnings"].begin(), ji["warnings"].end(), warning), 1) << ji["warnings"].dump();
+  // A FOLD file: refused, naming it.
+  const auto fold = test::run_command(test::cli() + " import " + out + " --out " + file("again.fold"));
+  EXPECT_EQ(fold.status, 2) << fold.err;
+  EXPECT_NE(fold.err.find(out + ": a FOLD file needs no import"), std::string::npos) << fold.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "again.fold"));
 }
 
 }  // namespace

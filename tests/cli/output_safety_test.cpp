@@ -1,4 +1,4 @@
-// Issue 20 (and issue 13 item 4): nothing of the user's is lost. Every command that writes
+// Nothing of the user's is lost. Every command that writes
 // files, run on inputs generated here, for each class of ordinary mistake: an output that is
 // an input, two outputs on one path, a failure after an earlier output, special files and
 // symlinks at an output path, ambiguous JSON, invalid file_frames, no answer with --out.
@@ -150,6 +150,12 @@ TEST(OutputSafety, AnOutputThatIsAnInputIsRefusedBeforeAnyWork) {
   expect_refused(s, "trace " + f.square + " --out " + s.path("link.fold"), {"--out", "PATTERN"});
   expect_refused(s, "string forward " + f.spec + " --theta 20 --out " + f.spec, {"--out", "SPEC"});
   expect_refused(s, "string design " + f.target + " --out " + s.path("d.fold") + " --svg " + f.target, {"--svg", "TARGET"});
+  // network reads a JSON and writes a FOLD: the same file, a symlink, a hard link or a path through ..
+  const std::string net = s.write("net.json", slurp(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/network/a4_R4R9R12.json"));
+  fs::create_symlink(net, s.path("net_link.json"));
+  fs::create_hard_link(net, s.path("net_hard.json"));
+  for (const std::string& out : {net, s.path("net_link.json"), s.path("net_hard.json"), s.path("sub/../net.json")})
+    expect_refused(s, "network " + net + " --out " + out, {"--out", "NETWORK"});
 }
 
 // report DIR --out DIR would overwrite the user's own a.folded.fold and read its own outputs

@@ -1,4 +1,4 @@
-// Provenance (issue 18 item 4): every JSON document a command prints or writes names the
+// Provenance: every JSON document a command prints or writes names the
 // rigidfold version and commit and the command line it came from.
 #include <gtest/gtest.h>
 

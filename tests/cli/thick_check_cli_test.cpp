@@ -1,4 +1,4 @@
-// `rigidfold check` and `rigidfold trace` on a thick FOLD (issue 15 Build item 6;
+// `rigidfold check` and `rigidfold trace` on a thick FOLD (see
 // kernel/thick/thick_check.hpp): the file `rigidfold thick --out` writes is answered with the
 // thick model - Bennett heights on the bundled 4 x 4 Miura-ori are mobile with DOF 1 and the
 // trace lands on the `thick` command's own trace; valley-side hinges are rigid (DOF 0 at flat);

@@ -1,4 +1,4 @@
-// Square-twist tessellation generator (issue 5): geometry and validity of the sheet, the
+// Square-twist tessellation generator: geometry and validity of the sheet, the
 // assignment rule, rigidity of the Type4 / Type3Rows layouts with 1 DOF by the exact
 // multiplier model (several sizes and twist angles), agreement of the general loop-closure
 // solver with it on 2 x 2 (verdict, DOF, folded states), the non-rigid AllType1 / AllType2

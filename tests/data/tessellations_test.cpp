@@ -1,4 +1,4 @@
-// Large-tessellation generators (issue 5): the graded Miura-ori (generic 1-DOF flat-foldable
+// Large-tessellation generators: the graded Miura-ori (generic 1-DOF flat-foldable
 // quad mesh), the waterbomb tessellation (multi-DOF) and the perturbed Miura (not
 // foldable). Checked by first principles (loop closure of the closed form), by the
 // multiplier verdict, and by the DOF of the general Jacobian on small instances.

@@ -45,7 +45,7 @@ TEST(StringVertex, ClosesTheLoopAndMatchesTheSeedFormulas) {
       // Transmission: theta_out = -theta exactly (to rounding).
       EXPECT_NEAR(v.theta_out, -th, 1e-14);
       EXPECT_NEAR(v.rho_a, -2 * th, 1e-14);
-      // phi, psi from the seed's eq. (38)-(39) with the DESIGN.md corrections.
+      // phi, psi from the seed's eq. (38)-(39) with the docs/DESIGN.md corrections.
       const double K1 = (1 / std::tan(a1) + 1 / std::tan(a2)) / 2, K2 = (1 / std::tan(a1) - 1 / std::tan(a2)) / 2;
       if (std::fabs(th) > 1e-3) {
         const double K3 = std::pow(K2 / std::cos(th), 2) + std::pow(K1 / std::sin(th), 2);

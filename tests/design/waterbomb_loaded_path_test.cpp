@@ -44,7 +44,7 @@ TEST(WaterbombLoadedPath, ForceMatchesVirtualWorkAndStabilityChangesAreLocated) 
 // secant in h overshot there and the n = 60 curve stopped before it). n = 60 costs ~4 s in
 // Release and 480 s under AddressSanitizer, which runs n = 12 (the same path, 33 ms in Release).
 TEST(WaterbombLoadedPath, ContinuationReachesTheFarLimit) {
-  const int n = test::kSanitizedBuild ? 12 : 60;
+  const int n = test::kSlowSanitizedBuild ? 12 : 60;
   const double limit = kPi - kPi / n;
   const double theta = limit - 1e-3 * limit;
   const auto path = waterbomb::waterbomb_loaded_path(n, to_radians(60.0), 1.0, 1.0, {theta});

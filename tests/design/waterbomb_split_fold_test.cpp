@@ -34,7 +34,7 @@ TEST(WaterbombSplitFold, PrintedFormsCloseTheLoop) {
         } catch (const InputError&) {
           continue;  // beyond the model's range for this n (theta_max)
         }
-        // DESIGN.md's closed-form bar, 1e-10: the printed acos forms lose digits (measured up
+        // docs/DESIGN.md's closed-form bar, 1e-10: the printed acos forms lose digits (measured up
         // to 3.4e-12 at n = 10); a stable rewrite is not done yet.
         EXPECT_LE(split_closure(n, to_radians(bdeg), g), 1e-10) << "n " << n << " b " << bdeg << " theta " << deg
                                                                  << " gm " << to_degrees(g.gamma_m) << " gv " << to_degrees(g.gamma_v);

@@ -71,7 +71,7 @@ waterbomb::PathEquilibrium far_minimum(const waterbomb::WaterbombSprings& s) {
   return {};
 }
 
-// Issue 14 acceptance, seed 004 Fig 2.9: n = 4, theta0 = 60 deg, equal k. The general
+// Seed 004 Fig 2.9: n = 4, theta0 = 60 deg, equal k. The general
 // minimiser (2n - 3 = 5 DOF, no symmetry), started on the far side of flat from a perturbed
 // state, finds the second stable state near theta = 99 deg, (gamma_m, gamma_v) near
 // (-18, 43) deg (the figure's reading), equal to the closed form to 1e-9 rad and 1e-9 in
@@ -102,7 +102,7 @@ TEST(EnergyEquilibrium, Fig29SecondStableStateWithoutSymmetry) {
       EXPECT_NEAR(eq.edge_angles[e], want, 1e-9) << "edge " << e << " seed " << seed;
     }
     EXPECT_NEAR(eq.energy, closed.energy, 1e-9 * closed.energy);
-    // The measured gaps, in the XML report (--gtest_output=xml) for the issue's closing note.
+    // The measured gaps, recorded in the XML report (--gtest_output=xml).
     RecordProperty("angle_gap_rad_seed" + std::to_string(seed),
                    sci((eq.edge_angles - b.per_edge(closed.angles)).lpNorm<Eigen::Infinity>()));
     RecordProperty("energy_gap_rel_seed" + std::to_string(seed),

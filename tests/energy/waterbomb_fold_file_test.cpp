@@ -1,4 +1,4 @@
-// Issue 14 acceptance: the general model on a waterbomb base given as a FOLD file (no
+// The general model on a waterbomb base given as a FOLD file (no
 // waterbomb-specific code on the solving path: FOLD reader, rest state from a folded frame's
 // coordinates, springs by letter, minimisation on the closure manifold from generic starts)
 // gives the same stable states as `rigidfold waterbomb` (design/waterbomb).

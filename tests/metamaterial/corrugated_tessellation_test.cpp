@@ -1,5 +1,5 @@
-// Seed 003 §3.2.3, Fig 3-9 (issue 17 acceptance: "the mixed tessellation of Fig 3-9(b)
-// non-rigid"). The 5 x 5-panel double-corrugated sheet (data/generators/corrugated_tessellation.hpp)
+// Seed 003 §3.2.3, Fig 3-9 (the mixed tessellation of Fig 3-9(b)
+// is non-rigid). The 5 x 5-panel double-corrugated sheet (data/generators/corrugated_tessellation.hpp)
 // has 16 interior vertices; its four corner windows are unit P and decide every letter. The
 // figure is lost, so the test searches every choice of the four corner P assignments (32
 // flat-foldable ones each: corrugated_flat_foldable_assignments and their flips), keeps the

@@ -1,5 +1,5 @@
-// The M-V assignment count of the Miura-ori (issue 17 item 3, "a 6x6 Miura ... enumerated
-// with a count and the time"), enumerated by the kernel (enumerate_assignments) against an
+// The M-V assignment count of the Miura-ori (up to 6 x 6 panels, with a count and the time),
+// enumerated by the kernel (enumerate_assignments) against an
 // independent count: Ginepro and Hull (2014, "Counting Miura-ori foldings") put the locally
 // flat-foldable assignments of an r x c-panel Miura-ori in bijection with the proper
 // 3-colourings of the r x c grid graph (one node per panel) with one node's colour fixed, so

@@ -1,4 +1,4 @@
-// The M-V assignment count of square-twist tessellations (issue 17 item 3, "at scale"),
+// The M-V assignment count of square-twist tessellations (at scale),
 // enumerated by the kernel (enumerate_assignments: Maekawa + big-little-big at every vertex,
 // backtracking) against an independent count.
 //
@@ -19,7 +19,7 @@
 // e.g. 16 for one twist (its 2^4 side letters), 4096 for 2 x 2 (the number
 // square_twist_tessellation.hpp reports from enumerating side letters with the multiplier
 // verdict). The test asserts it for 1 x 1 .. 2 x 3 on two twist angles; 4 x 4 would hold
-// 2^40 ~ 1.1e12 assignments, beyond any enumeration (see the closing note of issue 17).
+// 2^40 ~ 1.1e12 assignments, beyond any enumeration.
 #include <gtest/gtest.h>
 
 #include <cmath>

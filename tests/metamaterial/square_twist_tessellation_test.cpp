@@ -1,6 +1,6 @@
-// The independent check of seed 003 §3.3.2 (issue 17 item 4, acceptance: "square-twist
+// The independent check of seed 003 §3.3.2 (square-twist
 // Poisson's ratios and maximum heights agree between the closed forms and the traced
-// tessellation to <= 1e-9; nu_HL changes sign at the height maximum").
+// tessellation to <= 1e-9; nu_HL changes sign at the height maximum).
 //
 // The sheet: data/generators' square-twist tessellation, layout Type3Rows (every twist
 // Type 3 = the seed's T1, whose corner rectangles stay parallel), 3 x 3 twists of side a,

@@ -176,7 +176,7 @@ TEST(NetworkClosure, Fig27TraceIsTheClosedFormChain) {
 }
 
 // eq (2-34) with vertex A perturbed (91, 70, 60, 139 deg; still flat): not mobile, with the
-// evidence of DESIGN.md's verdict classes. At each input a1 the least residual the
+// evidence of docs/DESIGN.md's verdict classes. At each input a1 the least residual the
 // Gauss-Newton search reaches from the unperturbed network's closed configuration there is
 // far above the closure tolerance and grows with the fold amplitude, while the unperturbed
 // network closes to 1e-12 at the same inputs.

@@ -1,4 +1,4 @@
-// Files made by other tools (../shared/corpus): FOLD reference examples, the rigid-origami
+// Files made by other tools (tests/data/corpus, with their licences): FOLD reference examples, the rigid-origami
 // Python solver's patterns, Origami Simulator exports. Each must load (none is rejected
 // today; a rejection would have to be asserted here with its reason), round-trip, and
 // where it holds a folded 3D state, give the right sector angles.
@@ -52,7 +52,7 @@ void PrintTo(const CorpusFile& c, std::ostream* os) { *os << c.path; }
 class Corpus : public ::testing::TestWithParam<CorpusFile> {
  protected:
   void SetUp() override {
-    if (!std::filesystem::exists(corpus(GetParam().path))) GTEST_SKIP() << "corpus not checked out beside the project";
+    ASSERT_TRUE(std::filesystem::exists(corpus(GetParam().path))) << "missing from tests/data/corpus";
   }
 };
 
@@ -85,7 +85,7 @@ INSTANTIATE_TEST_SUITE_P(Files, Corpus, ::testing::ValuesIn(kFiles), [](const au
 
 TEST(CorpusSquareTwist, FoldedReferenceGivesTheDesignSectorAngles) {
   const std::string path = corpus("fold-spec/squaretwist.fold");
-  if (!std::filesystem::exists(path)) GTEST_SKIP();
+  ASSERT_TRUE(std::filesystem::exists(path)) << "missing from tests/data/corpus";
   const CreasePattern p = read_fold(path);
   const Topology t = build_topology(p, path);
   ASSERT_EQ(t.interior_vertices.size(), 4u);
@@ -120,7 +120,7 @@ TEST(CorpusSquareTwist, FoldedReferenceGivesTheDesignSectorAngles) {
 
 TEST(CorpusDiagonalFolded, FlatFoldedFormGivesPlusPiForTheValley) {
   const std::string path = corpus("fold-spec/diagonal-folded.fold");
-  if (!std::filesystem::exists(path)) GTEST_SKIP();
+  ASSERT_TRUE(std::filesystem::exists(path)) << "missing from tests/data/corpus";
   const CreasePattern p = read_fold(path);
   const Topology t = build_topology(p, path);
   const Eigen::VectorXd rho = reference_fold_angles(p, t);
@@ -129,7 +129,7 @@ TEST(CorpusDiagonalFolded, FlatFoldedFormGivesPlusPiForTheValley) {
 
 TEST(CorpusSquareBase, OrigamiSimulatorExportIsLocallyFlatFoldable) {
   const std::string path = corpus("rigid-origami/squareBase.fold");
-  if (!std::filesystem::exists(path)) GTEST_SKIP();
+  ASSERT_TRUE(std::filesystem::exists(path)) << "missing from tests/data/corpus";
   const CreasePattern p = read_fold(path);
   const Topology t = build_topology(p, path);
   const auto ff = flat_foldability(p, t, 1e-6);

@@ -1,5 +1,5 @@
 // FOLD reading/writing: round trip of every modelled and unknown key, and the corpus of
-// files written by other tools (../shared/corpus).
+// files written by other tools (tests/data/corpus).
 #include <gtest/gtest.h>
 
 #include <cmath>

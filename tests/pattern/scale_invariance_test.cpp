@@ -1,4 +1,4 @@
-// Scale-free geometry (issue 20): random Miura-ori and square-twist patterns scaled by 10^k,
+// Scale-free geometry: random Miura-ori and square-twist patterns scaled by 10^k,
 // k in [-300, 300], read back from FOLD text, get the verdict and DOF they get at scale 1;
 // the file's coordinates survive the round trip bit for bit; `check` on the CLI agrees.
 #include <gtest/gtest.h>
@@ -98,7 +98,7 @@ std::string num(double x) {
   return b;
 }
 
-// The issue's case: a unit square's edge norm underflowed (1e-300) or overflowed (1e300) and
+// The regression case: a unit square's edge norm underflowed (1e-300) or overflowed (1e300) and
 // the square was refused as "zero-length edge". A vertex really on another is still refused.
 TEST(ScaleInvariance, TinyAndHugeSquaresAreReadAndWrittenBackExactly) {
   for (double side : {1e-300, 3e-308, 1e300, 1.7e308}) {

@@ -1,5 +1,5 @@
 // Bifurcations located by Newton on the extended system (kernel/solve/branch_point_system.hpp,
-// kernel/solve/bifurcation.hpp; issue 12 item 6):
+// kernel/solve/bifurcation.hpp):
 //   - the weighted Hessian H(w) = d/dx (J(x)^T w) against central differences of the exact
 //     Jacobian (single vertices of degree 4-7 and the Type 2M bifurcation);
 //   - quadratic convergence of Gauss-Newton from a start 1e-2 rad off (residual sequence);

@@ -1,4 +1,4 @@
-// Issue 15, "the diamond arch of §4.4.1 is built, traced and shown mobile" (seed 003 §4.4.1,
+// The diamond arch of §4.4.1, built, traced and shown mobile (seed 003 §4.4.1,
 // Fig. 4-12, lost: reconstructed in data/generators/diamond_arch.hpp): a row of six-crease
 // diamond vertices (sectors (4-29), a = pi/6 as in the seed's figure), its zero-thickness
 // symmetric motion (4-39), and the thick arch with one plane-symmetric Bricard loop per vertex

@@ -1,5 +1,5 @@
-// Issue 15, "the box of six five-crease vertices (sectors pi/6, pi/2, 2pi/3, pi/2, pi/6) ...
-// built, traced and shown mobile" (seed 003 §4.3, Fig. 4-8): the hexagonal box
+// The box of six five-crease vertices (sectors pi/6, pi/2, 2pi/3, pi/2, pi/6),
+// built, traced and shown mobile (seed 003 §4.3, Fig. 4-8): the hexagonal box
 // (data/generators/hexagonal_box.hpp) with every vertex the Myard thick model
 // (kernel/thick/thick_vertex_models.hpp, a = pi/6) made of hinge heights
 // (vertex_height_steps.hpp), closed and traced by the core's ClosureSystem (one SE(3) hole

@@ -1,4 +1,4 @@
-// Issue 15 items 2-3: the thick vertices of seed 003 ch. 4 (Bennett, Myard, plane-symmetric
+// The thick vertices of seed 003 ch. 4 (Bennett, Myard, plane-symmetric
 // Bricard diamond and waterbomb) traced by the zero-thickness core's own solvers
 // (ClosureSystem with one SE(3) hole closure, newton_project with a driven crease,
 // continue_one_dof, jacobian_rank) through thick_sheet_from_loop, and compared with the

@@ -1,5 +1,5 @@
-// Issue 15, "the mu = 1/2 waterbomb pattern is shown to lose mobility, with the locking
-// named": the traditional waterbomb pattern (data/generators/traditional_waterbomb.hpp, seed
+// The mu = 1/2 waterbomb pattern, shown to lose mobility with the locking
+// named: the traditional waterbomb pattern (data/generators/traditional_waterbomb.hpp, seed
 // 003 §4.4.2: D and W vertices) as a network of thick Bricard loops
 // (kernel/thick/waterbomb_network.hpp), checked with the general SE(3) closure
 // (ThickClosureSystem) and kernel/thick/thick_network_mobility.hpp.

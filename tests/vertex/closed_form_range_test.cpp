@@ -1,4 +1,4 @@
-// The closed forms over the ends of their documented ranges (issue 20): every answer the
+// The closed forms over the ends of their documented ranges: every answer the
 // checked entry points return passes its own closure check, the Miura vertex is accurate at
 // alpha = 1e-300 deg .. 90 - 1e-12 deg and theta up to its limit, and the checks themselves
 // reject a wrong state.
@@ -51,8 +51,8 @@ TEST(ClosedFormRange, MiuraVertexPassesItsCheckOverTheWholeClosedRange) {
 }
 
 // As alpha1 -> 0, b lies on a: the vertex is the straight line a-c (sectors pi, pi) with d
-// flat, so rho_a + rho_b = rho_c: rho_b -> 4 theta, rho_d -> 0 (the issue's case printed
-// rho_b = 0 there, 80 deg off, with a closure residual of 1.4 rad).
+// flat, so rho_a + rho_b = rho_c: rho_b -> 4 theta, rho_d -> 0 (a regression case: rho_b = 0
+// was once printed there, 80 deg off, with a closure residual of 1.4 rad).
 TEST(ClosedFormRange, TinyAlphaTendsToTheStraightLineLimit) {
   for (double d1 : {1e-300, 1e-170, 1e-100}) {
     const double th = to_radians(20);

@@ -35,7 +35,7 @@ double rel_error(double x, const T& ref) {
   return static_cast<double>(abs(T(x) - ref) / abs(ref));
 }
 
-// Seed 000 as printed, with the DESIGN.md corrections: eq. (24) K3 = (K2/cos)^2 + (K1/sin)^2,
+// Seed 000 as printed, with the docs/DESIGN.md corrections: eq. (24) K3 = (K2/cos)^2 + (K1/sin)^2,
 // eq. (39) psi = arctan(f_y / f_x), eq. (40) as printed (alpha1 <= alpha2 assumed).
 struct Printed {
   double phi, psi;

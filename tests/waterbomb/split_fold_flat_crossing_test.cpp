@@ -1,4 +1,4 @@
-// The split-fold waterbomb's loaded path through the flat state (issue 14): the branch past
+// The split-fold waterbomb's loaded path through the flat state: the branch past
 // flat comes from the tangent cone of the symmetric closure system (waterbomb_flat_crossing
 // with the split fold's motion classes), never from the printed forms; the printed forms
 // (seed 004 eqs 3.13-3.30) are the cross-check on the far side.

@@ -1,4 +1,4 @@
-// The loaded waterbomb path through the flat state (issue 14 item 3): the general model's
+// The loaded waterbomb path through the flat state: the general model's
 // far side is reached along the tangent-cone branch that keeps the M/V letters, and equals
 // the closed-form symmetric curve there; the mirror branch exists and is rejected; with a
 // letter flipped no branch keeps the letters and the path stops at flat.
