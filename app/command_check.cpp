@@ -75,7 +75,7 @@ void add_check_command(CLI::App& app) {
       const ThickCheckReport r = thick_check(p, t);
       nlohmann::ordered_json j = {{"file", a->pattern}};
       j.update(thick_check_json(p, r, false));
-      std::cout << (a->json ? document_text(j) + "\n" : a->pattern + ": " + r.verdict + " (model: thick)\n" + thick_check_text(p, r, false));
+      std::cout << (a->json ? document_text(j) + "\n" : a->pattern + ": " + to_string(r.verdict_class) + " (model: thick; as a mechanism: " + r.verdict + ")\n" + thick_check_text(p, r, false));
       return;
     }
     FoldabilityOptions options;

@@ -272,7 +272,7 @@ void add_trace_command(CLI::App& app) {
       const ThickCheckReport r = thick_check(p, t, tq);
       Json j = {{"file", a->pattern}};
       j.update(thick_check_json(p, r, true));
-      std::cout << (a->json ? document_text(j) + "\n" : a->pattern + ": " + r.verdict + " (model: thick)\n" + thick_check_text(p, r, true));
+      std::cout << (a->json ? document_text(j) + "\n" : a->pattern + ": " + to_string(r.verdict_class) + " (model: thick; as a mechanism: " + r.verdict + ")\n" + thick_check_text(p, r, true));
       return;
     }
     TraceRequest rq;

@@ -63,6 +63,7 @@
 #include <vector>
 
 #include "kernel/analysis/branch_explorer.hpp"
+#include "kernel/analysis/foldability_class.hpp"
 #include "kernel/analysis/flat_foldable_witness.hpp"
 #include "kernel/analysis/general_verdict.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
@@ -74,15 +75,6 @@
 
 namespace rigidfold {
 
-enum class FoldabilityClass {
-  kFoldable,
-  kFoldableWithinTolerance,
-  kFoldableInPart,
-  kNotFoldableProof,
-  kNotFoldableEvidence,
-  kUndecided
-};
-const char* to_string(FoldabilityClass c);
 
 enum class FoldabilityModel { kMultiplierPropagation, kGeneralLoopClosure, kGivenStateHoleClosure, kNone };
 const char* to_string(FoldabilityModel m);

@@ -141,6 +141,7 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
   const int dof = report.mobility.dof;
   if (dof == 0) {
     report.verdict = "rigid";
+    report.verdict_class = FoldabilityClass::kNotFoldableProof;
     report.reason = "DOF 0 at the flat state: the thick closure is injective to first order there (smallest kept singular value " +
                     num(report.mobility.rank.sigma_kept) + ", cut " + num(report.mobility.rank.threshold) +
                     "), so the flat state is isolated";
@@ -278,6 +279,7 @@ ThickCheckReport thick_check(const CreasePattern& pattern, const Topology& topol
                                    : "continuation from the flat state (DOF 1)";
   if (reached) {
     report.verdict = "mobile";
+    report.verdict_class = report.letter_disagreements == 0 ? FoldabilityClass::kFoldable : FoldabilityClass::kUndecided;
     report.reason = "traced by " + how + " to " + num(to_degrees(report.target)) + " deg of hinge " + std::to_string(drive) + " in " +
                     std::to_string(report.steps.size()) + " steps, every step closed to " + num(request.closure_tolerance);
     // Mobile as a mechanism; the letters are a separate question on this motion.
@@ -299,6 +301,7 @@ nlohmann::ordered_json thick_check_json(const CreasePattern& p, const ThickCheck
   j["model"] = "thick";
   j["solver"] = "SE(3) loop closure of the thick sheet (one hole per thick vertex), pseudo-arclength continuation";
   j["verdict"] = r.verdict;
+  j["verdict_class"] = to_string(r.verdict_class);
   j["reason"] = r.reason;
   j["hinges"] = r.hinges;
   j["cut_edges"] = r.cut_edges;

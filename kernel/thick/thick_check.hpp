@@ -46,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/analysis/foldability_class.hpp"
 #include "kernel/pattern/crease_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/thick/thick_mobility.hpp"
@@ -83,7 +84,11 @@ struct ThickCheckReport {
   int holes = 0;                       // SE(3) loops (thick vertices)
   double min_thickness = 0.0, max_thickness = 0.0;  // over faces (pattern units)
   ThickMobilityReport mobility;        // at the flat state
-  std::string verdict;                 // "rigid", "mobile", "undecided"
+  std::string verdict;                 // "rigid", "mobile", "undecided" (as a mechanism)
+  // The shared verdict vocabulary (foldability_class.hpp), the headline: rigid is "not foldable
+  // (proof)"; mobile is "foldable" only when no lettered hinge ends against its letter, and
+  // "undecided" otherwise (a letter-keeping motion is neither found nor ruled out).
+  FoldabilityClass verdict_class = FoldabilityClass::kUndecided;
   std::string reason;
   int drive = -1;
   double target = 0.0;                 // radians

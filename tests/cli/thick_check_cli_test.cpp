@@ -51,6 +51,8 @@ TEST(ThickCheckCli, BennettMiuraIsMobileAndTracedOnTheThickCommandsMotion) {
   const auto c = run_json("check " + path);
   EXPECT_EQ(c["model"], "thick");
   EXPECT_EQ(c["verdict"], "mobile");
+  // The headline in the shared vocabulary: "foldable" only when no hinge ends against its letter.
+  EXPECT_EQ(c["verdict_class"], c["trace"]["letter_disagreements_at_end"].get<int>() == 0 ? "foldable" : "undecided");
   EXPECT_EQ(c["flat_state"]["dof"].get<int>(), 1);
   EXPECT_EQ(c["thick_vertices"].get<int>(), 9);  // the 3 x 3 interior vertices
   EXPECT_EQ(c["trace"]["dof_max"].get<int>(), 1);
@@ -92,6 +94,7 @@ TEST(ThickCheckCli, ValleySideHingesAreRigid) {
   const auto c = run_json("check " + thick_fold("valley"));
   EXPECT_EQ(c["model"], "thick");
   EXPECT_EQ(c["verdict"], "rigid");
+  EXPECT_EQ(c["verdict_class"], "not foldable (proof)");
   EXPECT_EQ(c["flat_state"]["dof"].get<int>(), 0);
   EXPECT_GT(c["flat_state"]["smallest_kept_singular_value"].get<double>(), 1e3 * c["flat_state"]["rank_cut"].get<double>());
   // A zero-thickness FOLD is still the zero-thickness model.
