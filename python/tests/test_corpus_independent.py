@@ -589,6 +589,19 @@ def test_corpus_verdict_without_letters_agrees_with_an_independent_check(rel, tm
     verify_verdict(rel, False, tmp_path)
 
 
+def verify_crossing_lines(rel, model, check):
+    """A "not foldable (proof)" on crossing lettered lines: at each vertex it names, four lettered
+    creases on two straight lines (by our own sectors), where no motion from flat folds all four."""
+    named = check["strictness"]["strict_obstruction_vertices"]
+    assert named, (rel, check["reason"][:200])
+    at = {v: (ring, sectors) for v, ring, sectors in model.vertices}
+    for v in named:
+        ring, sectors = at[v]
+        assert len(ring) == 4, (rel, v, ring)
+        assert all(model.letters[e] in "MV" for e in ring), (rel, v, [model.letters[e] for e in ring])
+        assert abs(sectors[0] + sectors[1] - np.pi) < 1e-6 and abs(sectors[1] + sectors[2] - np.pi) < 1e-6, (rel, v, sectors)
+
+
 def verify_verdict(rel, letters, tmp_path):
     path = os.path.join(CORPUS, rel)
     check = kernel_check(rel, letters)
@@ -599,6 +612,16 @@ def verify_verdict(rel, letters, tmp_path):
     closure = Closure(model, [])
     print(f"{rel} ({'letters' if letters else 'letters ignored'}): {verdict}; {closure.nv} interior vertices, "
           f"{model.E} edges")
+    if check.get("folds_in_part"):
+        # The headline answers the strict question; the weak motion behind it (some lettered
+        # creases flat) is replayed below like a yes, and a proof of "not foldable" rests on
+        # crossing straight lettered lines, checked here with our own sectors.
+        assert letters and verdict in ("foldable only in part", "not foldable (proof)"), (rel, verdict)
+        assert check["strictness"]["flat_lettered_creases"], rel
+        if verdict == "not foldable (proof)":
+            assert check["is_proof"] is True
+            verify_crossing_lines(rel, model, check)
+        verdict = "foldable"
 
     if verdict == "undecided":
         assert check["is_proof"] is False, f"{rel}: an undecided verdict flagged as a proof"
