@@ -156,9 +156,10 @@ void bind_pattern(py::module_& m) {
                std::to_string(p.num_edges()) + " edges, " + std::to_string(p.num_faces()) + " faces>";
       });
 
-  m.def("load", &read_pattern, py::arg("path"),
-        "Reads a crease pattern: FOLD, or an SVG in Origami Simulator's colours when the name ends in .svg.\n"
-        "Raises InputError naming the file and the place in it.");
+  m.def(
+      "load", [](const std::string& path) { return read_pattern(path); }, py::arg("path"),
+      "Reads a crease pattern: FOLD, an SVG in Origami Simulator's colours, ORIPA .opx or .cp, the format\n"
+      "recognised by the file's content. Raises InputError naming the file and the place in it.");
   m.def("parse_fold", &parse_fold, py::arg("text"), py::arg("source") = "<string>",
         "Parses FOLD JSON text; `source` names it in error messages. Raises InputError.");
   m.def("save", &write_fold, py::arg("pattern"), py::arg("path"),
