@@ -20,10 +20,11 @@ def help_text(*args):
 
 
 def subcommands(text):
-    """Names under CLI11's "SUBCOMMANDS:" heading."""
-    if "SUBCOMMANDS:" not in text:
+    """Names under CLI11's "Subcommands:" heading."""
+    parts = re.split(r"^subcommands:\s*$", text, maxsplit=1, flags=re.M | re.I)
+    if len(parts) < 2:
         return []
-    block = text.split("SUBCOMMANDS:", 1)[1]
+    block = parts[1]
     return [m.group(1) for m in re.finditer(r"^\s{2}([a-z0-9][a-z0-9-]*)\b", block, re.M)]
 
 
