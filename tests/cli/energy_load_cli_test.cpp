@@ -67,8 +67,10 @@ TEST(EnergyLoadCli, LoadHeightScalesWithThePattern) {
     const auto run = test::run_command(test::cli() + " energy " + pattern + " --rest " + kRest + " --starts 0 --json --load " + load);
     *status = run.status;
     std::vector<double> forces;
-    if (run.status == 0)
-      for (const auto& s : nlohmann::json::parse(run.out)["loaded"]["states"]) forces.push_back(s["force"].get<double>());
+    if (run.status == 0) {
+      const auto doc = nlohmann::json::parse(run.out);  // held: the loop's range is a part of it
+      for (const auto& s : doc["loaded"]["states"]) forces.push_back(s["force"].get<double>());
+    }
     return forces;
   };
   int status = -1;
