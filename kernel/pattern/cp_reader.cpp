@@ -1,4 +1,5 @@
 #include "kernel/pattern/cp_reader.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -73,12 +74,7 @@ std::string line_place(const std::string& source, long line) { return source + "
 
 }  // namespace
 
-bool is_cp_path(const std::string& path) {
-  if (path.size() < 3) return false;
-  std::string ext = path.substr(path.size() - 3);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".cp";
-}
+bool is_cp_path(const std::string& path) { return pattern_format_of_path(path) == PatternFormat::Cp; }
 
 bool looks_like_cp(const std::string& text) {
   bool yes = false;

@@ -88,12 +88,7 @@ std::string beginning(std::string_view t) {
 
 }  // namespace
 
-bool is_svg_path(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string ext = path.substr(path.size() - 4);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".svg";
-}
+bool is_svg_path(const std::string& path) { return pattern_format_of_path(path) == PatternFormat::Svg; }
 
 PatternFormat pattern_format_of_path(const std::string& path) {
   const std::string ext = lower_extension(path);
