@@ -1,4 +1,5 @@
 #include "kernel/pattern/opx_reader.hpp"
+#include "kernel/pattern/read_pattern.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -311,12 +312,7 @@ std::string number(double x) {
 
 }  // namespace
 
-bool is_opx_path(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string ext = path.substr(path.size() - 4);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".opx";
-}
+bool is_opx_path(const std::string& path) { return pattern_format_of_path(path) == PatternFormat::Opx; }
 
 CreasePattern arrange_oripa_lines(const std::vector<OripaCreaseLine>& lines, const std::string& source, const SvgReadOptions& options,
                                   SvgImportSummary* summary) {
