@@ -1,6 +1,6 @@
 // rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--circular EDGE,...] [--split EDGE:SPEC ...]
 //                 [--optimize [--epsilon E]
-//                 [--max-protrusion P] [--max-s0 S]] [--drive E] [--to DEG] [--steps N]
+//                 [--max-protrusion P] [--max-s0 S] [--max-evaluations N]] [--drive E] [--to DEG] [--steps N]
 //                 [--at T] [--samples N] [--general] [--json] [--out DIR]
 // SORCE rolling-contact joints (seed 002) for every folding crease of a pattern, on the path
 // trace_motion traces (exact multiplier family for flat-foldable degree-4 patterns, else the
@@ -153,7 +153,7 @@ void add_sorce_command(CLI::App& app) {
   struct Args {
     std::string pattern, offsets = "linear", out, parameter = "drive";
     double thickness = 0, epsilon = 0, max_protrusion = -1, max_s0 = -1, to = 0, at = -1;
-    int drive = -1, steps = 40, samples = 201;
+    int drive = -1, steps = 40, samples = 201, max_evaluations = 400;
     std::vector<int> circular;
     std::vector<std::string> split;
     bool optimize = false, json = false, general = false;
@@ -179,6 +179,8 @@ void add_sorce_command(CLI::App& app) {
   cmd->add_option("--max-protrusion", a->max_protrusion, "with --optimize: bound on every cam's protrusion (length, >= 0)")
       ->check(finite_in(0, 1e300));
   cmd->add_option("--max-s0", a->max_s0, "with --optimize: bound on every |s0| (length, >= 0)")->check(finite_in(0, 1e300));
+  auto* max_evaluations = cmd->add_option("--max-evaluations", a->max_evaluations, "with --optimize: the search's budget of designs evaluated (1..100000; default 400)")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--drive", a->drive, "driving crease (edge index; default: the tracing model's choice)")->check(CLI::NonNegativeNumber);
   auto* to = cmd->add_option("--to", a->to,
                              "driving crease's final fold angle, t = 1 (degrees, signed; default 170 in its letter's direction; "
@@ -196,7 +198,7 @@ void add_sorce_command(CLI::App& app) {
                 "trace with the general loop-closure solver even where the exact multiplier model applies");
   cmd->add_flag("--json", a->json, "print JSON (numbers round-trip exactly)");
   cmd->add_option("--out", a->out, "directory for sorce.json, profiles.svg/.dxf, panels.stl, frames.fold, poses.csv");
-  cmd->callback([a, to] {
+  cmd->callback([a, to, max_evaluations] {
     OutputSet outputs;
     outputs.add_input("PATTERN", a->pattern);
     const bool spec_given = a->offsets != "linear";
@@ -211,8 +213,8 @@ void add_sorce_command(CLI::App& app) {
     } else if (a->at >= 0) {
       throw InputError("--at", "needs --out DIR");
     }
-    if (!a->optimize && (a->epsilon != 0 || a->max_protrusion >= 0 || a->max_s0 >= 0))
-      throw InputError("--optimize", "--epsilon, --max-protrusion and --max-s0 bound the search: give --optimize");
+    if (!a->optimize && (a->epsilon != 0 || a->max_protrusion >= 0 || a->max_s0 >= 0 || max_evaluations->count() > 0))
+      throw InputError("--optimize", "--epsilon, --max-protrusion, --max-s0 and --max-evaluations bound the search: give --optimize");
     const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
 
     const CreasePattern p = read_pattern(a->pattern);
@@ -254,6 +256,7 @@ void add_sorce_command(CLI::App& app) {
     rq.epsilon = a->epsilon;
     if (a->max_protrusion >= 0) rq.max_protrusion = a->max_protrusion;
     if (a->max_s0 >= 0) rq.max_abs_s0 = a->max_s0;
+    rq.optimizer.max_evaluations = a->max_evaluations;
 
     SorceDesign d;
     try {

@@ -14,7 +14,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libceres-dev libnlopt-dev libnlopt-cxx-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-matplotlib python3-numpy python3-scipy python3-pytest
-  libboost-dev libfcl-dev libspectra-dev libexpat1-dev clang libclang-rt-14-dev
+  libboost-dev libfcl-dev libspectra-dev libexpat1-dev clang libclang-rt-14-dev lld ninja-build
   libopenblas0-pthread libhypre-dev libopenmpi-dev openmpi-bin
 )
 

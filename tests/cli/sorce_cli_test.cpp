@@ -43,14 +43,10 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
-  const fs::path out = scratch("miura");
-  fs::remove_all(out);
-  const auto r = test::run_command(test::cli() + " sorce " + kMiura + " --thickness 0.05 --drive 4 --to=-180 --steps 30 --at 0.5 --json --out " +
-                                   out.string());
+TEST(SorceCli, MiuraJointsPassTheirChecks) {
+  const auto r = test::run_command(test::cli() + " sorce " + kMiura + " --thickness 0.05 --drive 4 --to=-180 --steps 30 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
-  EXPECT_EQ(j, nlohmann::ordered_json::parse(slurp(out / "sorce.json")));  // the file is what was printed
   int folding = 0;
   for (const auto& c : j["creases"]) {
     if (!c["folds"].get<bool>()) continue;
@@ -59,16 +55,33 @@ TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
   }
   EXPECT_EQ(folding, 24);
   for (const auto& [name, bound] : j["check_bounds"].items()) EXPECT_LE(j["checks"][name].get<double>(), bound.get<double>()) << name;
-  EXPECT_FALSE(j.contains("stl_note")) << j["stl_note"];
   EXPECT_EQ(j["path"]["model"], "multiplier-propagation");
   EXPECT_NEAR(j["path"]["final_drive_deg"].get<double>(), -180.0, 1e-12);
   EXPECT_TRUE(j["checks"]["flat_folded_end"].get<bool>());
   EXPECT_TRUE(j["checks"]["all_stack"].get<bool>());
   EXPECT_TRUE(j["checks"]["slab_interference"].empty());
+  EXPECT_TRUE(j.contains("provenance"));
+}
+
+// --out on a 2 x 3 Miura-ori (the solids' swept clearances take minutes on the 4 x 4 under
+// AddressSanitizer, and exercise nothing the smaller pattern does not).
+TEST(SorceCli, OutWritesClosedPanelsFramesPosesAndDrawings) {
+  const fs::path pattern = scratch("m23_out.fold");
+  ASSERT_EQ(test::run_command(test::cli() + " generate miura --rows 2 --cols 3 --out " + pattern.string()).status, 0);
+  const fs::path out = scratch("miura");
+  fs::remove_all(out);
+  const auto r = test::run_command(test::cli() + " sorce " + pattern.string() + " --thickness 0.05 --to=-180 --steps 30 --at 0.5 --json --out " +
+                                   out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(j, nlohmann::ordered_json::parse(slurp(out / "sorce.json")));  // the file is what was printed
+  EXPECT_FALSE(j.contains("stl_note")) << j["stl_note"];
+  EXPECT_TRUE(j["checks"]["slab_interference"].empty());
+  const int faces = 6;
 
   // One closed, outward STL per panel; together they fill what the assembly at t = 0.5 fills.
   double panels_volume = 0.0;
-  ASSERT_EQ(j["out"]["panels"].size(), 16u);
+  ASSERT_EQ(j["out"]["panels"].size(), std::size_t(faces));
   for (const auto& f : j["out"]["panels"]) {
     const auto tris = testing::parse_stl(slurp(f.get<std::string>()));
     EXPECT_EQ(testing::open_or_misoriented_edges(tris), 0) << f;
@@ -79,19 +92,25 @@ TEST(SorceCli, MiuraJointsPassTheirChecksAndPanelsAreClosed) {
   const auto assembled = testing::parse_stl(slurp(out / "panels_at.stl"));
   EXPECT_NEAR(testing::enclosed_volume(assembled), panels_volume, 1e-5 * panels_volume);
 
-  // The frames read back as FOLD: 16 panels of their own, 11 frames (t = 0, 0.1, ..., 1).
+  // The frames read back as FOLD: the panels on their own, 11 frames (t = 0, 0.1, ..., 1).
   const CreasePattern frames = read_fold((out / "frames.fold").string());
-  EXPECT_EQ(frames.num_faces(), 16);
+  EXPECT_EQ(frames.num_faces(), faces);
   ASSERT_TRUE(frames.extra.contains("file_frames"));
   EXPECT_EQ(frames.extra["file_frames"].size(), 11u);
   EXPECT_EQ(frames.extra["file_frames"][5]["rigidfold:sorce_t"].get<double>(), 0.5);
   // Pose table: a header and one row per (t, face).
   const std::string csv = slurp(out / "poses.csv");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 11 * 16);
-  EXPECT_NE(slurp(out / "profiles.dxf").find("E4_LEFT"), std::string::npos);
-  EXPECT_NE(slurp(out / "profiles.svg").find(">E4<"), std::string::npos);
-  EXPECT_TRUE(j.contains("provenance"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 11 * faces);
+  // Every folding crease's profiles are drawn, named by its edge.
+  const std::string dxf = slurp(out / "profiles.dxf"), svg = slurp(out / "profiles.svg");
+  for (const auto& c : j["creases"]) {
+    if (!c["folds"].get<bool>()) continue;
+    const std::string e = std::to_string(c["edge"].get<int>());
+    EXPECT_NE(dxf.find("E" + e + "_LEFT"), std::string::npos) << e;
+    EXPECT_NE(svg.find(">E" + e + "<"), std::string::npos) << e;
+  }
   fs::remove_all(out);
+  fs::remove(pattern);
 }
 
 // --general: the same joints on the general solver's path pass the same bounds.
@@ -138,12 +157,14 @@ TEST(SorceCli, PathParametersPassTheChecks) {
 TEST(SorceCli, OptimizeReportsItsSearch) {
   const fs::path pattern = scratch("m23.fold");
   ASSERT_EQ(test::run_command(test::cli() + " generate miura --rows 2 --cols 3 --out " + pattern.string()).status, 0);
-  const auto r = test::run_command(test::cli() + " sorce " + pattern.string() + " --thickness 0.05 --to=-180 --optimize --json");
+  // A small budget: the search stops at it and says how far it went.
+  const auto r = test::run_command(test::cli() + " sorce " + pattern.string() + " --thickness 0.05 --to=-180 --optimize --max-evaluations 12 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
   const auto& o = j["optimization"];
   EXPECT_EQ(o["algorithm"], "LN_COBYLA");
   EXPECT_GT(o["evaluations"].get<int>(), 1);
+  EXPECT_LE(o["evaluations"].get<int>(), 12);
   EXPECT_EQ(o["coefficients"].size(), 3 * o["faces"].size());
   fs::remove(pattern);
 }
@@ -183,6 +204,8 @@ TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
       {kMiura + " --thickness 0.05 --at 0.5", "--at"},
       {kMiura + " --thickness 0.05 --at 2 --out " + out.string(), "--at"},
       {kMiura + " --thickness 0.05 --epsilon 0.1", "--optimize"},
+      {kMiura + " --thickness 0.05 --max-evaluations 5", "--optimize"},
+      {kMiura + " --thickness 0.05 --optimize --max-evaluations 0", "--max-evaluations"},
       {kMiura + " --thickness 0.05 --drive 999", "--drive"},
       {kMiura + " --thickness 0.05 --steps 3", "--steps"},
       {kMiura + " --thickness 0.05 --to 0", "--to"},
