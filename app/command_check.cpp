@@ -8,7 +8,7 @@
 #include "app/thick_flags.hpp"
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
-#include "app/foldability_json.hpp"
+#include "report/foldability_json.hpp"
 #include "app/number_flags.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/math/angle_units.hpp"
@@ -89,7 +89,7 @@ void add_check_command(CLI::App& app) {
     }();
     if (a->json) {
       nlohmann::ordered_json j = {{"file", a->pattern}};
-      j.update(foldability_json(r));
+      j.update(report::foldability_json(r));
       std::cout << document_text(j) << "\n";
       return;
     }

@@ -18,7 +18,7 @@
 // Each state also says whether it keeps the M/V letters and whether panels pass through each
 // other there (the springs know neither).
 // Stable states of any crease pattern with torsional springs at its creases
-// (kernel/energy/crease_spring_states.hpp, JSON by app/energy_json.hpp): the rest state and N random starts that respect
+// (kernel/energy/crease_spring_states.hpp, JSON by report/energy_json.hpp): the rest state and N random starts that respect
 // the letters, each minimised on the loop-closure manifold with no symmetry imposed; every
 // state printed has passed its checks (closure <= 1e-12 rad, stationarity, reduced Hessian
 // positive definite).
@@ -28,7 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "app/energy_json.hpp"
+#include "report/energy_json.hpp"
 #include "app/provenance.hpp"
 #include "app/number_flags.hpp"
 #include "kernel/energy/crease_stiffness.hpp"
@@ -137,7 +137,7 @@ void add_energy_command(CLI::App& app) {
     nlohmann::ordered_json j;
     j["file"] = a->pattern;
     j["rest"] = a->rest;
-    j.update(crease_spring_states_json(p, t, problem, found));
+    j.update(report::crease_spring_states_json(p, t, problem, found));
     if (!loaded.is_null()) j["loaded"] = loaded;
     if (a->json) {
       std::cout << document_text(j) << "\n";

@@ -17,7 +17,7 @@
 #include "app/terminal_progress.hpp"
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
-#include "app/foldability_json.hpp"
+#include "report/foldability_json.hpp"
 #include "kernel/pattern/length_scale.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/analysis/multiplier_propagation.hpp"
@@ -100,8 +100,8 @@ Json analyse(const fs::path& file, const fs::path& out_dir, OutputSet& outputs, 
   FoldabilityOptions with_letters, without_letters;
   without_letters.use_assignment = false;
   with_letters.progress = without_letters.progress = progress;
-  j["check"] = foldability_json(check_foldability(p, t, with_letters));
-  j["check_ignoring_assignment"] = foldability_json(check_foldability(p, t, without_letters));
+  j["check"] = report::foldability_json(check_foldability(p, t, with_letters));
+  j["check_ignoring_assignment"] = report::foldability_json(check_foldability(p, t, without_letters));
   j["vertex_details"] = vertices;
 
   bool has_angles = false;

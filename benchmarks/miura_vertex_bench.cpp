@@ -1,5 +1,5 @@
 // Asymmetric Miura vertex closed form: time per evaluation, and the worst relative error of
-// phi, psi and the fold angles against the 50-digit reference (tests/vertex/miura_reference.hpp)
+// phi, psi and the fold angles against the 50-digit reference (reference/miura_reference.hpp)
 // over the same inputs, printed as counters. BM_MiuraVertexRotation times the frame rotation.
 #include <benchmark/benchmark.h>
 
@@ -11,7 +11,7 @@
 #include "kernel/math/angle_units.hpp"
 #include "kernel/math/so3.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
-#include "tests/vertex/miura_reference.hpp"
+#include "reference/miura_reference.hpp"
 
 namespace rigidfold {
 namespace {

@@ -15,6 +15,11 @@ namespace rigidfold {
 
 using ProgressSink = std::function<void(const std::string& message)>;
 
+// Thrown by a sink to stop the work at its next unit (the Python module's sink throws it when
+// Ctrl-C arrives). Not a std::exception, so that no handler of failed computations takes it for
+// one of theirs: it unwinds to the sink's owner.
+struct WorkInterrupted {};
+
 // sink(make_message()) when a sink is set; make_message is not called otherwise.
 template <class MakeMessage>
 void report_progress(const ProgressSink& sink, MakeMessage&& make_message) {

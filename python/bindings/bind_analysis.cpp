@@ -1,6 +1,6 @@
 // The analysis front door: check (check_foldability, the CLI's `check --json` object), trace
 // (trace_motion, numpy arrays per branch) and enumerate_assignments. The GIL is released while
-// the kernel works.
+// the kernel works; Ctrl-C stops it at its next unit of work (interrupt_on_signal).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "app/foldability_json.hpp"
+#include "report/foldability_json.hpp"
 #include "kernel/analysis/assignment_enumeration.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/analysis/trace_motion.hpp"
@@ -86,6 +86,7 @@ void bind_analysis(py::module_& m) {
         if (coordinate_tolerance && !(*coordinate_tolerance >= 0 && std::isfinite(*coordinate_tolerance)))
           throw py::value_error("coordinate_tolerance: must be a finite number >= 0 (0: exact data), or None");
         nlohmann::ordered_json j;
+        const ProgressSink interrupt = interrupt_on_signal();  // made while the GIL is held
         {
           py::gil_scoped_release release;
           const Topology topology = build_topology(pattern, source);
@@ -94,7 +95,8 @@ void bind_analysis(py::module_& m) {
           options.force_general = force_general;
           options.explore_branches = explore_branches;
           options.coordinate_tolerance = coordinate_tolerance;
-          j = cli::foldability_json(check_foldability(pattern, topology, options));
+          options.progress = interrupt;
+          j = report::foldability_json(check_foldability(pattern, topology, options));
         }
         return json_to_python(j);
       },
@@ -115,6 +117,7 @@ void bind_analysis(py::module_& m) {
          bool use_assignment, bool force_general, std::optional<int> branch, bool all_branches,
          const std::string& source, std::optional<double> coordinate_tolerance) {
         MotionTrace trace;
+        const ProgressSink interrupt = interrupt_on_signal();  // made while the GIL is held
         {
           py::gil_scoped_release release;
           const Topology topology = build_topology(pattern, source);
@@ -127,6 +130,7 @@ void bind_analysis(py::module_& m) {
           request.branch = branch;
           request.all_branches = all_branches;
           request.coordinate_tolerance = coordinate_tolerance;
+          request.progress = interrupt;
           trace = trace_motion(pattern, topology, request);
         }
         py::list branches;
@@ -156,6 +160,7 @@ void bind_analysis(py::module_& m) {
       [](const CreasePattern& pattern, bool symmetry, long max_assignments, long max_verdicts, int max_listed,
          const std::string& source) {
         AssignmentEnumeration r;
+        const ProgressSink interrupt = interrupt_on_signal();  // made while the GIL is held
         {
           py::gil_scoped_release release;
           const Topology topology = build_topology(pattern, source);
@@ -164,6 +169,7 @@ void bind_analysis(py::module_& m) {
           options.max_assignments = max_assignments;
           options.max_verdicts = max_verdicts;
           options.max_listed = max_listed;
+          options.progress = interrupt;
           r = enumerate_assignments(pattern, topology, options, source);
         }
         py::list classes;

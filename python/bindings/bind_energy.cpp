@@ -1,11 +1,11 @@
 // Energy bindings: the stable states of any pattern with crease springs, the object
-// `rigidfold energy --json` prints (kernel/energy/crease_spring_states.hpp, app/energy_json.hpp).
+// `rigidfold energy --json` prints (kernel/energy/crease_spring_states.hpp, report/energy_json.hpp).
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include <string>
 
-#include "app/energy_json.hpp"
+#include "report/energy_json.hpp"
 #include "kernel/energy/crease_spring_states.hpp"
 #include "kernel/energy/rest_angles.hpp"
 #include "kernel/pattern/topology.hpp"
@@ -38,7 +38,7 @@ void bind_energy(py::module_& m) {
           const Topology topology = build_topology(pattern, source);
           problem.rest = rest_is_path ? read_rest_state(rest_path, pattern, topology) : rest_angles;
           problem.rest_place = rest_is_path ? rest_path : "rest";
-          j = cli::crease_spring_states_json(pattern, topology, problem, crease_spring_states(pattern, topology, problem));
+          j = report::crease_spring_states_json(pattern, topology, problem, crease_spring_states(pattern, topology, problem));
         }
         return json_to_python(j);
       },

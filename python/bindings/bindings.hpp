@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "kernel/analysis/progress.hpp"
+
 namespace rigidfold::python {
 
 namespace py = pybind11;
@@ -20,6 +22,11 @@ void bind_thick(py::module_& m);     // thick-panel vertices (seed 003 ch. 4)
 void bind_sorce(py::module_& m);     // SORCE rolling joints (seed 002)
 void bind_metamaterial(py::module_& m);  // square-twist metamaterial unit (seed 003 3.3.2)
 void bind_formats(py::module_& m);   // SVG and DXF text of a crease pattern
+
+// A progress sink (kernel/analysis/progress.hpp) that runs Python's signal handlers at each unit
+// of the kernel's work, the GIL held only for that: Ctrl-C during a long check or trace raises
+// KeyboardInterrupt within one unit of work instead of after the whole run.
+rigidfold::ProgressSink interrupt_on_signal();
 
 // A JSON value as plain Python objects (dict, list, float, int, str, bool, None), through the
 // standard json module so that numbers keep their exact values.

@@ -2,12 +2,30 @@
 // itself in its own file (bind_*.cpp).
 #include <pybind11/pybind11.h>
 
+#include <chrono>
+
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/no_answer_error.hpp"
 #include "python/bindings/bindings.hpp"
 #include "rigidfold_version.hpp"
 
 namespace rigidfold::python {
+
+rigidfold::ProgressSink interrupt_on_signal() {
+  // Python runs signal handlers on its main thread only: work started on another thread gets no
+  // sink (and no cost).
+  const py::module_ threading = py::module_::import("threading");
+  if (!threading.attr("main_thread")().is(threading.attr("current_thread")())) return {};
+  // At most every 50 ms: the GIL is taken only then, so that other Python threads are not slowed.
+  auto last = std::chrono::steady_clock::now();
+  return [last](const std::string&) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last < std::chrono::milliseconds(50)) return;
+    last = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw rigidfold::WorkInterrupted{};  // the handler's exception stays set
+  };
+}
 
 py::object json_to_python(const nlohmann::ordered_json& j) {
   return py::module_::import("json").attr("loads")(j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
@@ -43,6 +61,9 @@ PYBIND11_MODULE(_core, m) {
       py::object exc = py::handle(no_answer_error.ptr())(py::str(e.what()));
       exc.attr("residual") = py::float_(e.residual());
       PyErr_SetObject(no_answer_error.ptr(), exc.ptr());
+    } catch (const rigidfold::WorkInterrupted&) {
+      // PyErr_CheckSignals set the signal handler's exception (KeyboardInterrupt for Ctrl-C).
+      if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     }
   });
 

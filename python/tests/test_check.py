@@ -92,3 +92,32 @@ def test_check_releases_the_gil():
     inside = [t for t in stamps if span["start"] + 0.02 < t < span["end"] - 0.02]
     assert len(inside) > 1000
     assert span["result"]["verdict_class"] == "not foldable (evidence)"
+
+
+def test_ctrl_c_stops_a_long_check():
+    # A check of the corpus hyperbolic paraboloid (seconds; minutes under AddressSanitizer) in a
+    # child interpreter that sends itself SIGINT a quarter second in: KeyboardInterrupt must come
+    # out of the call itself (no result), not after the whole run.
+    import subprocess
+    import sys
+    import textwrap
+
+    code = textwrap.dedent(f"""
+        import os, signal, threading, time
+        import rigidfold
+        pattern = rigidfold.load({os.path.join(SOURCE_DIR, 'tests', 'data', 'corpus', 'origami-simulator', 'hypar.svg')!r})
+        threading.Timer(0.25, os.kill, (os.getpid(), signal.SIGINT)).start()
+        start = time.monotonic()
+        result = None
+        try:
+            result = rigidfold.check(pattern)
+        except KeyboardInterrupt:
+            print("interrupted", time.monotonic() - start - 0.25)
+        else:
+            print("finished", time.monotonic() - start)
+        """)
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    words = run.stdout.split()
+    assert words[0] == "interrupted", run.stdout
+    assert float(words[1]) < 15.0, run.stdout  # seconds from the signal to the exception

@@ -14,7 +14,7 @@
 #include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/spherical_4r.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
-#include "tests/vertex/miura_reference.hpp"
+#include "reference/miura_reference.hpp"
 
 namespace rigidfold {
 namespace {

@@ -1,5 +1,5 @@
 // Asymmetric Miura vertex closed form: against a 50-digit reference computed by a different
-// route (cone intersection, tests/vertex/miura_reference.hpp), against the general loop
+// route (cone intersection, reference/miura_reference.hpp), against the general loop
 // closure (Newton on the kernel's closure), its motion limit, and the seed's printed form.
 //
 // Error measure: relative, |x - ref| / |ref|, for phi, psi and the four fold angles. None of
@@ -16,7 +16,7 @@
 #include "kernel/math/so3.hpp"
 #include "kernel/vertex/miura_vertex.hpp"
 #include "kernel/vertex/vertex_closure.hpp"
-#include "tests/vertex/miura_reference.hpp"
+#include "reference/miura_reference.hpp"
 #include "tests/vertex/vertex_test_utils.hpp"
 
 namespace rigidfold {

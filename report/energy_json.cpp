@@ -1,10 +1,10 @@
-#include "app/energy_json.hpp"
+#include "report/energy_json.hpp"
 
 #include <cmath>
 
 #include "kernel/math/angle_units.hpp"
 
-namespace rigidfold::cli {
+namespace rigidfold::report {
 
 nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, const Topology& topology,
                                                  const CreaseSpringProblem& problem, const CreaseSpringStates& states) {
@@ -91,4 +91,4 @@ nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, c
   return j;
 }
 
-}  // namespace rigidfold::cli
+}  // namespace rigidfold::report

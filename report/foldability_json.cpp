@@ -1,8 +1,8 @@
-#include "app/foldability_json.hpp"
+#include "report/foldability_json.hpp"
 
 #include "kernel/math/angle_units.hpp"
 
-namespace rigidfold::cli {
+namespace rigidfold::report {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -264,4 +264,4 @@ Json foldability_json(const FoldabilityReport& r) {
   return j;
 }
 
-}  // namespace rigidfold::cli
+}  // namespace rigidfold::report

@@ -23,9 +23,9 @@
 
 #include "kernel/energy/crease_spring_states.hpp"
 
-namespace rigidfold::cli {
+namespace rigidfold::report {
 
 nlohmann::ordered_json crease_spring_states_json(const CreasePattern& pattern, const Topology& topology,
                                                  const CreaseSpringProblem& problem, const CreaseSpringStates& states);
 
-}  // namespace rigidfold::cli
+}  // namespace rigidfold::report

@@ -6,7 +6,7 @@
 
 #include "kernel/analysis/foldability_report.hpp"
 
-namespace rigidfold::cli {
+namespace rigidfold::report {
 
 // Keys: assignment, verdict (the three-valued summary: rigidly-foldable, not-rigidly-foldable,
 // undecided), verdict_class (the six classes of docs/DESIGN.md), rigidly_foldable (bool, or null
@@ -17,4 +17,4 @@ namespace rigidfold::cli {
 // (relative), interference, seconds; holes_closed, reference_residual for sheets with holes.
 nlohmann::ordered_json foldability_json(const FoldabilityReport& report);
 
-}  // namespace rigidfold::cli
+}  // namespace rigidfold::report
