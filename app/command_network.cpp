@@ -20,7 +20,6 @@
 #include "app/summary_stream.hpp"
 #include "kernel/math/angle_units.hpp"
 #include "kernel/network/network_analysis.hpp"
-#include "kernel/pattern/assignment.hpp"
 #include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/output_set.hpp"
@@ -74,10 +73,7 @@ Json crease_pattern_json(const LinkageNetwork& net, const NetworkCreasePattern& 
   Json o = Json::object();
   for (int k = 0; k < net.num_linkages(); ++k) o[net.linkages[k].name] = cp.orientation[k] > 0 ? "as given" : "reversed";
   c["layout"] = o;
-  std::string letters;
-  for (int e = 0; e < cp.pattern.num_edges(); ++e)
-    if (cp.edge_joint[e] >= 0) letters += assignment_letter(cp.pattern.assignments[e]);
-  c["letters"] = letters;
+  c["letters"] = cp.crease_letters();
   c["vertex_loop_residual_rad"] = cp.residual;
   return c;
 }
@@ -151,11 +147,9 @@ void print_text(std::FILE* text, const std::string& path, const NetworkSpec& spe
     if (!r.trace->complete) std::fprintf(text, "trace stopped: %s\n", r.trace->stop_reason.c_str());
   }
   if (r.crease_pattern) {
-    std::string letters;
-    for (int e = 0; e < r.crease_pattern->pattern.num_edges(); ++e)
-      if (r.crease_pattern->edge_joint[e] >= 0) letters += assignment_letter(r.crease_pattern->pattern.assignments[e]);
     std::fprintf(text, "crease pattern: %d vertices, %d creases (letters %s), vertex loops close to %.1e rad; wrote %s\n",
-                 r.crease_pattern->pattern.num_vertices(), r.crease_pattern->pattern.num_edges() - 8, letters.c_str(),
+                 r.crease_pattern->pattern.num_vertices(), r.crease_pattern->pattern.num_edges() - 8,
+                 r.crease_pattern->crease_letters().c_str(),
                  r.crease_pattern->residual, out.c_str());
   }
 }

@@ -1,5 +1,6 @@
 #include "kernel/network/network_crease_pattern.hpp"
 #include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/assignment.hpp"
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -303,6 +304,13 @@ NetworkCreasePattern network_crease_pattern(const LinkageNetwork& net, const Eig
   if (!(out.residual <= tolerance))
     throw NoAnswerError("network --out: the crease pattern's vertex loops do not close at the network's configuration", out.residual);
   return out;
+}
+
+std::string NetworkCreasePattern::crease_letters() const {
+  std::string letters;
+  for (int e = 0; e < pattern.num_edges(); ++e)
+    if (edge_joint[e] >= 0) letters += assignment_letter(pattern.assignments[e]);
+  return letters;
 }
 
 }  // namespace rigidfold

@@ -53,6 +53,8 @@ struct NetworkCreasePattern {
   std::vector<std::string> vertex_linkage;  // linkage name of each interior vertex (vertices 0..3)
   std::vector<int> orientation;         // per linkage: +1 laid out as given, -1 reversed
   double central_angle_sum = 0.0;       // (2-32), radians
+  // The M/V letter of each crease (edges with a joint), in edge order: "MVVM...".
+  std::string crease_letters() const;
 };
 
 NetworkCreasePattern network_crease_pattern(const LinkageNetwork& network, const Eigen::VectorXd& q,
