@@ -101,7 +101,7 @@ nlohmann::ordered_json import_json(const std::string& in, const std::string& out
   return j;
 }
 
-void print_text(const nlohmann::ordered_json& j) {
+void print_import_text(const nlohmann::ordered_json& j) {
   const auto& s = j["svg"];
   std::cout << j["file"].get<std::string>() << " -> " << j["out"].get<std::string>() << "\n";
   std::cout << "  " << s["segments"] << " segments from " << s["drawn_elements"] << " elements (" << s["segments_by_assignment"].dump()
@@ -170,7 +170,7 @@ void add_import_command(CLI::App& app) {
     outputs.commit();
     const auto j = import_json(a->in, a->out, format, p, t, summary);
     if (a->json) std::cout << document_text(j) << "\n";
-    else print_text(j);
+    else print_import_text(j);
   });
 }
 

@@ -82,7 +82,7 @@ nlohmann::ordered_json info_json(const std::string& path, const CreasePattern& p
   return j;
 }
 
-void print_text(const nlohmann::ordered_json& j) {
+void print_info_text(const nlohmann::ordered_json& j) {
   std::cout << j["file"].get<std::string>() << "\n";
   std::cout << "  vertices " << j["vertices"] << ", edges " << j["edges"] << ", faces " << j["faces"]
             << (j["faces_derived"].get<bool>() ? " (derived)" : "") << ", " << j["coordinates"].get<std::string>() << "\n";
@@ -133,7 +133,7 @@ void add_info_command(CLI::App& app) {
     const Topology t = build_topology(p, *path);
     const auto j = info_json(*path, p, t, *tol);
     if (*json) std::cout << document_text(j) << "\n";
-    else print_text(j);
+    else print_info_text(j);
   });
 }
 

@@ -26,7 +26,7 @@
 #include "kernel/pattern/vertex_letter_rules.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 AssignmentEnumeration enumerate(const CreasePattern& p, bool symmetry = true, long max_verdicts = 100'000) {
   AssignmentEnumerationOptions o;
@@ -234,5 +234,5 @@ TEST(AssignmentEnumeration, MiuraCountsAreGridThreeColouringsOverThree) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -31,7 +31,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 CreasePattern modified(double twist, generators::SquareTwistModifiedType type) {
@@ -214,5 +214,5 @@ TEST(BranchExplorerSeed001, Type1MInterferenceOnsetNear23Point4Degrees) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -22,7 +22,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::vector<int> edge_signs(const CreasePattern& p) {
   std::vector<int> s(p.num_edges());
@@ -145,5 +145,5 @@ TEST(FlatCreasePush, RefusesWrongSizes) {
   EXPECT_THROW(push_off_flat_creases(sys, Eigen::VectorXd::Ones(4), {1, -1}, 1e-12), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

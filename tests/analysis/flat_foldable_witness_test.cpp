@@ -22,7 +22,7 @@
 #include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = 3.141592653589793;
 
@@ -239,5 +239,5 @@ TEST(FlatFoldableWitness, DefectsBeyondTheRoundingGetNoWitness) {
   EXPECT_FALSE(flat_foldable_witness(exact, build_topology(exact), 1e-9).has_value());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "tests/support/sanitized.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -190,5 +190,5 @@ TEST(Foldability, EveryBundledAndCorpusFileIsListed) {
   EXPECT_GE(pattern_files(true).size(), 15u);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

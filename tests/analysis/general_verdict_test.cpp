@@ -28,7 +28,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 double rad(double deg) { return deg * kPi / 180; }
 double deg(double r) { return r * 180 / kPi; }
@@ -362,11 +362,11 @@ TEST(GeneralVerdictPerturbedMiura, NoFoldedPointNearFlat) {
   std::cout << "    worst vertex " << g.worst_vertices[0].first << " block " << g.worst_vertices[0].second << "\n";
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Step 5's polish: searches cut short (three steps each, the first search skipped) leave a
 // foldable Miura-ori's best point off the manifold (7.5e-6 rad at 0.1 rad, above the polish
@@ -403,5 +403,5 @@ TEST(GeneralVerdictPolish, NewtonFinishesASearchCutShort) {
   EXPECT_GE(with.trace.max_fold, rad(30));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -36,7 +36,7 @@
 #include "kernel/vertex/vertex_second_order.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = 3.141592653589793;
 
@@ -310,5 +310,5 @@ TEST(IntervalLoopGain, ClassicSquareTwistSvgsAreNotFoldableWithinTheirPrecision)
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

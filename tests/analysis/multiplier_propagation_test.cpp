@@ -26,7 +26,7 @@
 #include "kernel/geometry/face_placement.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 double rad(double deg) { return deg * kPi / 180; }
 std::string sci(double x) {
@@ -423,5 +423,5 @@ TEST(VerdictCorrugated, FourRigidAssignmentsEachInPAndQ) {
   RecordProperty("smallest_nonrigid_defect", sci(smallest_bad_defect));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -12,7 +12,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Two patterns side by side (the second shifted by `shift` in x), as one sheet of two pieces.
 CreasePattern side_by_side(const CreasePattern& a, const CreasePattern& b, double shift) {
@@ -116,5 +116,5 @@ TEST(PatternPieces, EachPieceCheckedAloneAndTheWholeAgrees) {
   EXPECT_TRUE(check_foldability(one, build_topology(one)).pieces.empty());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -19,7 +19,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const std::string kSquareTwist = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/square_twist_30_type4.fold";
 const std::string kMiura = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/miura_4x4_alpha60.fold";
@@ -103,5 +103,5 @@ TEST(ProgressCli, ShownOnStderrOnlyWhenAskedAndStdoutUnchanged) {
       << design.err;
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -14,7 +14,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 TEST(ReferenceMobility, MiuraTubeFoldsBothWaysToItsFoldLimits) {
@@ -95,5 +95,5 @@ TEST(ReferenceMobility, GivenStateAgainstItsLettersIsNotACertificate) {
   EXPECT_EQ(reference_mobility(p, t, ignore).verdict, Verdict::kRigidlyFoldable);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

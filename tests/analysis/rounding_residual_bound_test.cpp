@@ -22,7 +22,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 generators::MiuraParams miura_3x3(double perturbation = 0.0) {
   generators::MiuraParams m;
@@ -229,11 +229,11 @@ TEST(AmplitudeSearch, RejectsBadArguments) {
   EXPECT_THROW(amplitude_search(sys, z, -one, one, o), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The verdict on a pattern whose motion needs its exact geometry (a Miura-ori turned by 0.3
 // rad in its plane, so that no crease line stays parallel to an axis), written with 4
@@ -268,5 +268,5 @@ TEST(GeneralVerdictRounding, RoundedMiuraIsNotCalledRigid) {
   EXPECT_FALSE(gb.evidence[0].explained_by_rounding);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

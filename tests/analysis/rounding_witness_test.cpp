@@ -18,7 +18,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The Miura folded to straight-crease angle `fold`, as a folded form (3D coordinates),
 // each coordinate rounded to `decimals` places (negative: not rounded).
@@ -124,5 +124,5 @@ TEST(RoundingWitness, AGapTheRoundingCannotExplainIsNotFoldableWithinPrecision) 
   EXPECT_FALSE(r.foldable()) << r.reason;
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

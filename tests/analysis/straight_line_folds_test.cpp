@@ -13,7 +13,7 @@
 #include "kernel/pattern/validate_pattern.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // A 3 x 3 grid of unit squares: creases on x = 1, 2 and y = 1, 2 (four degree-4 vertices
 // where two straight lines cross). letter(vertical, line, segment) gives each crease's
@@ -93,5 +93,5 @@ TEST(StraightLineFolds, LinesWhoseLettersAlternateDoNotFoldAndTheVerdictNeverSay
   EXPECT_EQ(straight_line_folds(p, t, so).folds.size(), 4u);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

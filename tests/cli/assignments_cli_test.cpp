@@ -10,7 +10,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const std::string kBundled = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/";
 
@@ -79,5 +79,5 @@ TEST(AssignmentsCli, BadInputExitsTwoNamingThePlace) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -18,7 +18,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 nlohmann::json check(const CreasePattern& p, const std::string& name, const std::string& flags = "") {
   const auto dir = std::filesystem::temp_directory_path() / ("rigidfold_check_" + std::to_string(::getpid()));
@@ -213,11 +213,11 @@ TEST(CheckCli, Type2MBranchesAndLocatedBifurcation) {
   EXPECT_EQ(keep, 2);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // A sheet with a hole (the bundled Miura tube's generator): checked from its given 3D state
 // with the SE(3) hole closure instead of being refused.
@@ -238,5 +238,5 @@ TEST(CheckCli, MiuraTubeIsCheckedFromItsGivenState) {
   EXPECT_TRUE(j["obstruction"].is_null());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

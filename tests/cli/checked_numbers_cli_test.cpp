@@ -22,7 +22,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string num(double x) {
   char b[40];
@@ -173,5 +173,5 @@ TEST(CheckedNumbersCli, MiuraTinyAlphaIsAccurate) {
   EXPECT_LE(j["closure_residual_rad"].get<double>(), 1e-14);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

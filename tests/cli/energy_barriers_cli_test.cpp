@@ -13,7 +13,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const std::string kSource = std::string(RIGIDFOLD_SOURCE_DIR) + "/";
 const std::string kBase = kSource + "data/bundled/waterbomb_base.fold";
@@ -71,5 +71,5 @@ TEST(EnergyBarriersCli, WaterbombBarrierIsTheFlatCuspOfTheWaterbombCommand) {
   EXPECT_NE(text.out.find("barrier state 1 <-> state 2:"), std::string::npos) << text.out;
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -16,7 +16,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const std::string kSource = std::string(RIGIDFOLD_SOURCE_DIR) + "/";
 const std::string kBase = kSource + "data/bundled/waterbomb_base.fold";
@@ -87,5 +87,5 @@ TEST(EnergyCli, SheetsWithHolesAreRefusedAsInput) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

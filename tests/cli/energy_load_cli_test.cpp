@@ -18,7 +18,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 const std::string kSource = std::string(RIGIDFOLD_SOURCE_DIR) + "/";
@@ -122,5 +122,5 @@ TEST(EnergyLoadCli, BadSpecExitsTwoNamingTheJsonPath) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

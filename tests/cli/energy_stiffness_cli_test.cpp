@@ -15,7 +15,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 const std::string kSource = std::string(RIGIDFOLD_SOURCE_DIR) + "/";
@@ -89,5 +89,5 @@ TEST(EnergyStiffnessCli, BadSpecExitsTwoNamingTheJsonPath) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -12,7 +12,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string bundled(const std::string& name) { return std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/" + name; }
 
@@ -152,5 +152,5 @@ TEST_F(ExportCli, FoldWritesAnStlWithTheOtherOutputs) {
   EXPECT_NE(clash.err.find("--stl"), std::string::npos) << clash.err;
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -24,7 +24,7 @@
 #include "tests/support/sanitized.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -388,5 +388,5 @@ TEST(HostileInput, InterruptedTraceLeavesTheOldFileOrTheWholeNewOne) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -14,7 +14,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
 
@@ -191,5 +191,5 @@ TEST_F(ImportCli, CpWithALineDrawnTwiceListsTheMerge) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "again.fold"));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

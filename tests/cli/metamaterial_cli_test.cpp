@@ -18,7 +18,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -142,5 +142,5 @@ TEST(MetamaterialCli, RefusesDeviceAndFileAsPlotDirectory) {
   fs::remove_all(d);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

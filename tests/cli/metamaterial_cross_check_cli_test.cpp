@@ -15,7 +15,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -89,5 +89,5 @@ TEST(MetamaterialCrossCheckCli, BadFlagsExit2NamingTheFlag) {
   EXPECT_EQ(ok.status, 0) << ok.err;
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

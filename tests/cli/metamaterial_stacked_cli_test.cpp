@@ -11,7 +11,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(MetamaterialStackedCli, JsonStackAgreesWithElementTwoClosedForm) {
   const auto r = test::run_command(test::cli() +
@@ -58,5 +58,5 @@ TEST(MetamaterialStackedCli, BadFlagsExitTwoNamingTheFlag) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

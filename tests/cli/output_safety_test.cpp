@@ -27,7 +27,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
@@ -547,5 +547,5 @@ TEST(OutputSafety, TwoConcurrentWritersLeaveOneCompleteFile) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -11,7 +11,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::filesystem::path fresh_directory(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("rigidfold_provenance_" + name + "_" + std::to_string(::getpid()));
@@ -80,5 +80,5 @@ TEST(ProvenanceCli, ReportJsonFileCarriesIt) {
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

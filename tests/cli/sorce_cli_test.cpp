@@ -23,7 +23,7 @@
 #include "tests/support/stl_mesh.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -235,5 +235,5 @@ TEST(SorceCli, BadInputExitsTwoNamingThePlaceAndWritesNothing) {
   fs::remove_all(out.parent_path());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

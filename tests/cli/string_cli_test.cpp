@@ -12,7 +12,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -160,5 +160,5 @@ TEST(StringCli, BadInputExitsTwoNamingFileAndPathWithoutOutput) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

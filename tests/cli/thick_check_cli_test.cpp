@@ -18,7 +18,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -161,5 +161,5 @@ TEST(ThickCheckCli, FlagsTheThickModelCannotHonourExitTwo) {
   EXPECT_EQ(plain.status, 0) << plain.err;
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -22,7 +22,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -252,5 +252,5 @@ TEST(ThickCli, BadInputExitsTwoNamingThePlace) {
   fs::remove_all(copy.parent_path());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -18,7 +18,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 class TempDir {
@@ -356,11 +356,11 @@ TEST(TraceCli, FullyFoldedMarksInterference) {
   EXPECT_GT(switches, 0);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // A sheet with a hole: both branches through the Miura tube's given state, the flat-folded
 // end solved exactly at 180 deg, the given state as the first CSV row.
@@ -399,5 +399,5 @@ TEST(TraceCli, MiuraTubeBothWaysFromItsGivenState) {
   EXPECT_LT(std::abs(std::stod(c.rows[0][col])), 170.0);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -15,7 +15,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(VertexCli, S4RJsonBranchesCloseTheLoop) {
   const auto r = test::run_command(test::cli() + " vertex s4r --twists 50,110,100,95 --input 35 --json");
@@ -109,5 +109,5 @@ TEST(VertexCli, MiuraBadFlagsExitTwoNamingTheFlag) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -20,7 +20,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombCli, JsonMatchesLibraryAndCloses) {
   const auto r = test::run_command(test::cli() + " waterbomb --n 4 --theta0-deg 60 --k-ratio 1.5 --json");
@@ -131,5 +131,5 @@ TEST(WaterbombCli, DesignedStiffnessSwitchesAtTheTarget) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

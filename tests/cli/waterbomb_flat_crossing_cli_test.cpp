@@ -13,7 +13,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombFlatCrossingCli, JsonReportsTheLetterKeepingBranch) {
   const auto dir = std::filesystem::temp_directory_path() / ("rf_wb_flat_" + std::to_string(::getpid()));
@@ -55,5 +55,5 @@ TEST(WaterbombFlatCrossingCli, TextNamesTheBranch) {
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -12,7 +12,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombRestDesignCli, DesignedRestAngleReachesTheTargetForward) {
   const auto r = test::run_command(test::cli() + " waterbomb --n 4 --target-second-state-deg 104 --k-ratio 1.5 --json");
@@ -57,11 +57,11 @@ TEST(WaterbombRestDesignCli, BadInputExitsTwoNamingTheFlag) {
   EXPECT_TRUE(r.out.empty());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombRestDesignCli, RestAngleForASwitchingForce) {
   const auto r = test::run_command(test::cli() + " waterbomb --n 5 --target-switching-force 12 --design theta0 --k-ratio 2 --json");
@@ -87,5 +87,5 @@ TEST(WaterbombRestDesignCli, RestAngleForASwitchingForce) {
   EXPECT_TRUE(high.out.empty());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

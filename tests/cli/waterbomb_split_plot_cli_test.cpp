@@ -19,7 +19,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -167,5 +167,5 @@ TEST(WaterbombSplitCli, FailedOrClashingPlotWritesNothing) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

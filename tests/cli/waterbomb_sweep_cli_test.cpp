@@ -15,7 +15,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -71,5 +71,5 @@ TEST(WaterbombSweepCli, BadListsExitTwoNamingTheFlag) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -16,7 +16,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::miura_edge_angles;
 using testing::random_vector;
@@ -183,5 +183,5 @@ TEST(ClosureSystem, SheetWithHoleIsRejected) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -15,7 +15,7 @@
 #include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 ClosureOptions with_holes() {
   ClosureOptions o;
@@ -174,5 +174,5 @@ TEST(ClosureHoles, TriangularTubeIsRigid) {
   EXPECT_FALSE(newton_project(sys, start, no).converged);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

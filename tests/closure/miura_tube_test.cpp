@@ -22,7 +22,7 @@
 #include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 ClosureSystem tube_system(const CreasePattern& p, const Topology& t) {
@@ -186,5 +186,5 @@ TEST(MiuraTube, BadParametersNameTheirField) {
   EXPECT_EQ(place_of(tp), "rows");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

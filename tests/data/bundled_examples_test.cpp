@@ -10,7 +10,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold::test {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(GeneratorBundle, NamesAndContents) {
   const auto examples = generators::bundled_examples();
@@ -119,5 +119,5 @@ TEST(GeneratorCli, BadFlagsNameTheFlagAndExitTwo) {
   EXPECT_NE(missing.err.find("--out"), std::string::npos);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::test

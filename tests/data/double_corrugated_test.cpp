@@ -12,7 +12,7 @@
 #include "tests/support/input_error_place.hpp"
 
 namespace rigidfold::test {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using generators::CorrugatedParams;
 using generators::CorrugatedUnit;
@@ -158,5 +158,5 @@ TEST(GeneratorCorrugated, BadParametersNameTheParameter) {
   EXPECT_EQ(place_of([] { generators::corrugated_assignment(CorrugatedUnit::P, {3, 4, 2, 4}); }), "odd_joint");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::test

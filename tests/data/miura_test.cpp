@@ -7,7 +7,7 @@
 #include "tests/data/generator_test_utils.hpp"
 
 namespace rigidfold::test {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using generators::MiuraCrease;
 using generators::MiuraParams;
@@ -186,5 +186,5 @@ TEST(GeneratorMiura, BadParametersNameTheParameter) {
   EXPECT_EQ(place_of(mp), "perturbation");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::test

@@ -21,7 +21,7 @@
 #include "tests/data/generator_test_utils.hpp"
 
 namespace rigidfold::test {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using generators::SquareTwistTessellationLayout;
 using generators::SquareTwistTessellationParams;
@@ -402,5 +402,5 @@ TEST(GeneratorSquareTwistTessellation, BadParametersNameTheParameter) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::test

@@ -8,7 +8,7 @@
 #include "tests/support/input_error_place.hpp"
 
 namespace rigidfold::test {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using generators::SquareTwistModifiedType;
 using generators::SquareTwistParams;
@@ -281,5 +281,5 @@ TEST(GeneratorSquareTwist, BadParametersNameTheParameter) {
             "assignment");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::test

@@ -19,7 +19,7 @@
 #include "kernel/solve/rank.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(GradedMiura, TrapezoidPanelsWithVaryingFlatFoldableVertices) {
   generators::GradedMiuraParams gp;
@@ -115,5 +115,5 @@ TEST(PerturbedMiura, NotFlatFoldableAndTheMiuraFoldDoesNotClose) {
   EXPECT_GT(r.lpNorm<Eigen::Infinity>(), 1e-3);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

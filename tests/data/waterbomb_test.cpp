@@ -7,7 +7,7 @@
 #include "tests/data/generator_test_utils.hpp"
 
 namespace rigidfold::test {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(GeneratorWaterbomb, TraditionalBaseIsTheSquare) {
   const CreasePattern p = generators::waterbomb_base({});
@@ -93,5 +93,5 @@ TEST(GeneratorWaterbomb, BadParameters) {
   EXPECT_THROW(generators::waterbomb_base(wp), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::test

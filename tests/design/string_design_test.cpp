@@ -14,7 +14,7 @@
 #include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::design {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 MiuraString random_string(int n, std::uint64_t seed, double lo_deg = 30, double hi_deg = 70) {
@@ -174,5 +174,5 @@ TEST(StringCurve, NloptFindsAnExactDesignWhenTheClosedFormSeedIsWrong) {
   EXPECT_TRUE(r.binding.empty());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::design

@@ -16,7 +16,7 @@
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold::design {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 MiuraString random_string(int n, std::uint64_t seed) { return random_miura_string(n, seed, to_radians(35), to_radians(75), 0.9); }
@@ -166,5 +166,5 @@ TEST(StringKinematics, SpineSegmentsKeepTheirLengths) {
   for (int k = 0; k <= 20; ++k) EXPECT_NEAR((st.spine[k + 1] - st.spine[k]).norm(), s.lengths[k], 1e-13);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::design

@@ -11,7 +11,7 @@
 #include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using waterbomb::EquilibriumKind;
 
@@ -127,5 +127,5 @@ TEST(WaterbombBistability, BadInputNamesTheParameter) {
   EXPECT_EQ(place_of([] { waterbomb::waterbomb_bistability(4, 1.0, 1, NAN); }), "k_v");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -11,7 +11,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombCurve, ForceIsTheSlopeOfTheEnergyAndJumpsAtTheFlatState) {
   const auto c = waterbomb::waterbomb_curve(4, to_radians(60.0), 1.0, 1.0, 241);
@@ -66,5 +66,5 @@ TEST(WaterbombCurve, RefusesBadSampleCounts) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -11,7 +11,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombDesign, RatioPutsStateTwoWhereAsked) {
   int designed = 0;
@@ -42,5 +42,5 @@ TEST(WaterbombDesign, RatioPutsStateTwoWhereAsked) {
   EXPECT_THROW(waterbomb::stiffness_ratio_for_state2(4, to_radians(95.0), to_radians(100.0)), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -8,7 +8,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // F = dV/d(delta): against a central difference of V in the deflection, on both sides of flat.
 TEST(WaterbombForce, IsTheEnergySlopeInDeflection) {
@@ -47,5 +47,5 @@ TEST(WaterbombForce, SnapThresholdsAtFlat) {
   EXPECT_THROW(waterbomb::waterbomb_force(s, 1.0, 1.0, 0.0), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

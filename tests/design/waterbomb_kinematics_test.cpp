@@ -15,7 +15,7 @@
 #include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using waterbomb::FoldPair;
 
@@ -139,5 +139,5 @@ TEST(WaterbombKinematics, ValidityLimitsAreReported) {
   EXPECT_NEAR(waterbomb::theta_limit(4), to_radians(135.0), 1e-15);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

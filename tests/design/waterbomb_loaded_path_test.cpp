@@ -10,7 +10,7 @@
 #include "tests/support/sanitized.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombLoadedPath, ForceMatchesVirtualWorkAndStabilityChangesAreLocated) {
   std::vector<double> thetas;
@@ -55,5 +55,5 @@ TEST(WaterbombLoadedPath, ContinuationReachesTheFarLimit) {
   EXPECT_NEAR(path.points[0].force, path.points[0].force_closed_form, 1e-9 * std::max(1.0, std::fabs(path.points[0].force_closed_form)));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -13,7 +13,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The stable state past flat of the forward analysis.
 double state2(int n, double theta0, double k_m, double k_v) {
@@ -74,11 +74,11 @@ TEST(WaterbombRestDesign, BadInputAndNoAnswer) {
   EXPECT_THROW(waterbomb::rest_angle_for_state2(4, to_radians(134.0), 0.0, 1.0), NoAnswerError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The rest angle for a target switching force: forward from known rest angles and back, the
 // designed angle's switching force on the general model equal to the target to 1e-9, and the
@@ -106,5 +106,5 @@ TEST(WaterbombRestDesign, RestAngleForSwitchingForceRoundTrip) {
   EXPECT_THROW(waterbomb::rest_angle_for_switching_force(4, NAN, 1.0, 1.0, r), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

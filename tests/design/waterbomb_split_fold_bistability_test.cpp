@@ -16,7 +16,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using waterbomb::EquilibriumKind;
 
@@ -147,11 +147,11 @@ TEST(WaterbombSplitFoldBistability, CurveCheckedOnTheGeneralModel) {
   RecordProperty("split_curve_worst_force_gap", std::to_string(worst));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Switching force of the split fold: as b -> 0 it tends to half the plain base's on a base
 // with unit valley creases (every fold halved: V_SF -> V_WB / 2; r = cos(b/2) -> 1), and it is
@@ -180,5 +180,5 @@ TEST(WaterbombSplitFoldBistability, SwitchingForceTendsToHalfThePlainBase) {
   EXPECT_THROW(waterbomb::split_fold_switching_force(4, to_radians(5.0), to_radians(100.0), 1.0, 1.0), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using waterbomb::FoldPair;
 
@@ -95,5 +95,5 @@ TEST(WaterbombSplitFoldEnergy, SplitFoldsLowerTheBarrier) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -11,7 +11,7 @@
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 double split_closure(int n, double b, waterbomb::FoldPair g) {
   const double a = kPi / n - b;
@@ -42,11 +42,11 @@ TEST(WaterbombSplitFold, PrintedFormsCloseTheLoop) {
     }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Contact limits against the digest's table (seed-004 digest section 2.3, derived and checked
 // there by three independent constructions; 3 decimals in degrees, 2 in the angles).
@@ -74,5 +74,5 @@ TEST(WaterbombSplitFold, ContactLimitsMatchDigestTable) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

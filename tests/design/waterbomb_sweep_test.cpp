@@ -13,7 +13,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombSweep, RowsEqualTheSingleAnalyses) {
   waterbomb::SweepSpec spec;
@@ -117,5 +117,5 @@ TEST(WaterbombSweep, BadSpecNamesTheList) {
   EXPECT_EQ(place(s), "rows");  // the work budget
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

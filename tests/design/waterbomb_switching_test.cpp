@@ -14,7 +14,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(WaterbombSwitching, IsTheLargestPushBeforeFlat) {
   for (auto [n, theta0_deg, k_m] : {std::tuple{4, 60.0, 1.0}, std::tuple{3, 45.0, 0.2}, std::tuple{10, 45.0, 3.0}}) {
@@ -67,5 +67,5 @@ TEST(WaterbombSwitching, RefusesWhatNoStiffnessCanDo) {
                InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -19,7 +19,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 struct Base {
   CreasePattern pattern;
@@ -177,5 +177,5 @@ TEST(EnergyEquilibrium, ReducedHessianBoundsPathCurvature) {
   EXPECT_GT(off.stationarity_residual, 1e-3);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

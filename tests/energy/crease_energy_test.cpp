@@ -19,7 +19,7 @@
 #include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Seed 004 Table 2.1: l = 0.714 mm, b = 50 mm, h = 0.02032 mm, metallic glass E = 93 GPa
 // (Table 2.3) -> k = 0.00455 N m/rad as printed (3 digits).
@@ -114,5 +114,5 @@ TEST(EnergyRestAngles, FromFoldedFrame) {
   EXPECT_THROW(rest_angles_from_frame(with, 7), InputError);  // no such frame
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -10,7 +10,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 struct Base {
   CreasePattern p = read_fold(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold");
@@ -64,5 +64,5 @@ TEST(EnergyLoadSpec, ErrorsNameTheJsonPath) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

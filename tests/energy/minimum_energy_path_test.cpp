@@ -30,7 +30,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The bundled waterbomb base (n = 4) with rest at theta0 = 60 deg: the string method between
 // its two stable states, started off the symmetric path (seeded perturbation) and with no
@@ -275,5 +275,5 @@ TEST(MinimumEnergyPath, OneDofBarrierMatchesBrentOnTheTracedBranch) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -19,7 +19,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(StableStateSearch, FindsTheWaterbombsTwoStatesWithoutKnowingItIsAWaterbomb) {
   for (auto [n, theta0_deg, k_m] : {std::tuple{4, 60.0, 1.0}, std::tuple{6, 45.0, 2.0}}) {
@@ -71,5 +71,5 @@ TEST(StableStateSearch, FindsTheWaterbombsTwoStatesWithoutKnowingItIsAWaterbomb)
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -12,7 +12,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const CreasePattern& base() {
   static const CreasePattern p = read_fold(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold");
@@ -101,5 +101,5 @@ TEST(EnergyStiffnessSpec, ErrorsNameTheJsonPath) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

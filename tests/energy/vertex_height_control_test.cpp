@@ -18,7 +18,7 @@
 #include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The generated waterbomb base of n mountain creases, its springs at rest at theta0 (k_m,
 // k_v), pressed at its vertex with the valley creases' ends on the support plane.
@@ -172,5 +172,5 @@ TEST(EnergyHeightControl, KktDerivativesMatchCentralDifferences) {
   EXPECT_LT((at.hessian - at.hessian.transpose()).lpNorm<Eigen::Infinity>(), 1e-12);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -22,7 +22,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(EnergyFoldFile, BundledWaterbombMatchesDesignCommand) {
   const CreasePattern p = read_fold(std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/waterbomb_base.fold");
@@ -68,5 +68,5 @@ TEST(EnergyFoldFile, BundledWaterbombMatchesDesignCommand) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 // One generic flat-foldable degree-4 vertex at the origin in a square sheet: creases at
@@ -151,5 +151,5 @@ TEST(FoldCli, WritesFoldedFrameAndObjAndReportsMismatch) {
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

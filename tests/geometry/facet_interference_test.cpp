@@ -15,7 +15,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 // Two triangles as separate faces (no shared vertex unless `share`).
@@ -111,5 +111,5 @@ TEST(FacetInterference, StripWhoseOuterPanelsCross) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

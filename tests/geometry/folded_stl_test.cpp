@@ -16,7 +16,7 @@
 #include "tests/support/stl_mesh.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::parse_stl;
 using testing::StlTriangle;
@@ -120,5 +120,5 @@ TEST(FoldedStl, EarClippingCoversANonConvexFaceCounterClockwise) {
   EXPECT_THROW(triangulate_face(bow, bow.faces[0]), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

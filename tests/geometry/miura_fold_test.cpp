@@ -11,7 +11,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(MiuraFold, ClosedFormAnglesPlaceFacesWithoutMismatch) {
   for (int n : {2, 5, 20, 60}) {
@@ -53,5 +53,5 @@ TEST(MiuraFold, WrongAnglesShowAsMismatch) {
   EXPECT_GT(g.relative_mismatch(), 1e-5);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

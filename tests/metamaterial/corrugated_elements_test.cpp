@@ -18,7 +18,7 @@
 #include "design/metamaterial/corrugated_elements.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 using E = CorrugatedElement;
@@ -189,5 +189,5 @@ TEST(MetamaterialCorrugatedElements, BadInputsThrow) {
   EXPECT_THROW(corrugated_height_maximum(E::kElement1, {1.0, 1.0, 1.0}, 2.0, 1.0), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

@@ -41,7 +41,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold::generators {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using A = Assignment;
 
@@ -301,5 +301,5 @@ TEST(CorrugatedTessellation, BundledFig3_9bSheetThroughTheCheckCommand) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::generators

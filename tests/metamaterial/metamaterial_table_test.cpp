@@ -12,7 +12,7 @@
 #include "kernel/math/angle_units.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 MetamaterialParams twist(double alpha_deg, int samples = 181) {
   MetamaterialParams p;
@@ -189,5 +189,5 @@ TEST(MetamaterialTable, CsvHasOneLinePerRowAndRoundTrips) {
   EXPECT_NE(svg.find("nu_HL"), std::string::npos);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

@@ -19,7 +19,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Proper 3-colourings of the r x c grid graph, by rows of c colours.
 long grid_three_colourings(int r, int c) {
@@ -68,5 +68,5 @@ TEST(MiuraAssignmentCount, EnumerationMatchesGridThreeColourings) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

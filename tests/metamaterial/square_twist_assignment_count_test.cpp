@@ -31,7 +31,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 long independent_count(int r, int c) { return 1L << (4 * r * c - r * (c - 1) - c * (r - 1)); }
 
@@ -59,5 +59,5 @@ TEST(SquareTwistAssignmentCount, EnumerationMatchesTheSideLetterCount) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

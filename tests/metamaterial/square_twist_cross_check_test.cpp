@@ -18,7 +18,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -150,5 +150,5 @@ TEST(MetamaterialSquareTwistCrossCheck, GeneratorSpacingY) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

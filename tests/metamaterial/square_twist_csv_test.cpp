@@ -16,7 +16,7 @@
 #include "design/metamaterial/square_twist_csv.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::vector<std::vector<double>> parse(std::istream& in, std::string& header) {
   std::getline(in, header);
@@ -81,5 +81,5 @@ TEST(MetamaterialSquareTwistCsv, FileRoundTripAndErrors) {
   EXPECT_THROW(write_square_twist_csv("/nonexistent-dir/x.csv", p, 3), std::runtime_error);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

@@ -48,7 +48,7 @@
 #include "kernel/solve/newton_projection.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kN = 3;  // twists per side
@@ -363,5 +363,5 @@ TEST(MetamaterialFoldedVelocity, VelocitiesAreTheDerivativeOfPositions) {
   EXPECT_THROW(folded_velocity(s.p, s.topo, rho.head(3), dir, zero, 0), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

@@ -18,7 +18,7 @@
 #include "design/metamaterial/square_twist_unit.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -191,5 +191,5 @@ TEST(MetamaterialSquareTwistUnit, BadInputsThrow) {
   EXPECT_TRUE(std::isnan(square_twist_unit(params(2.5), 0.0).nu_SL));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

@@ -21,7 +21,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::metamaterial {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 using generators::StackedMetamaterialParams;
@@ -201,5 +201,5 @@ TEST(StackedMetamaterial, SeedClaimsOnFig3_12) {
   EXPECT_NEAR(check(4, 135, 60).height_max, 2 * check(1, 135, 60).height_max, 1e-9);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::metamaterial

@@ -8,7 +8,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string data(const std::string& name) { return std::string(RIGIDFOLD_SOURCE_DIR) + "/data/network/" + name; }
 
@@ -78,5 +78,5 @@ TEST(NetworkCli, BadInputExitsTwoNamingThePlace) {
   std::remove(path.c_str());
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -13,7 +13,7 @@
 #include "kernel/vertex/spherical_4r.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double pi = std::numbers::pi;
 
@@ -276,5 +276,5 @@ TEST(NetworkClosure, ProbeSeparatesSingularFromMobile) {
   EXPECT_EQ(probe_input_motion(system, c.q, spec.input), 2);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

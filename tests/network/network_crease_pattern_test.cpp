@@ -29,7 +29,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
@@ -254,5 +254,5 @@ TEST(NetworkCreasePatternCli, OutWritesFoldAndRefusesNonFlatNetworks) {
   fs::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -9,7 +9,7 @@
 #include "tests/support/input_error_place.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using nlohmann::json;
 
@@ -85,5 +85,5 @@ TEST(NetworkJson, BadInputNamesItsPlace) {
   EXPECT_EQ(place_of(json::array()), "n.json");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -12,7 +12,7 @@
 #include "kernel/network/relation_types.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double pi = std::numbers::pi;
 
@@ -148,5 +148,5 @@ TEST(NetworkRelationTypes, GeneralSolverAgreesOnEveryVariant) {
   EXPECT_LE(worst, 1e-12);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -20,7 +20,7 @@
 #include "kernel/network/relation_types.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double pi = std::numbers::pi;
 using Chains = std::vector<std::vector<int>>;
@@ -229,5 +229,5 @@ TEST(TwoFoldTransmissions, ExhaustiveTwistAssembliesAtABCFig21) { check_exhausti
 TEST(TwoFoldTransmissions, ClosedFormAndNetworkSolverAgreeFig21) { check_base(kFig21); }
 TEST(TwoFoldTransmissions, ClosedFormAndNetworkSolverAgreeFig27) { check_base(kFig27); }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -11,7 +11,7 @@
 #include "tests/support/run_command.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 struct BadCase {
   const char* name;
@@ -119,5 +119,5 @@ TEST(BadInputCli, MissingFileAndBadFlagsExitTwo) {
   EXPECT_EQ(r.status, 2);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "tests/support/expect_same_pattern.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
@@ -139,5 +139,5 @@ TEST(CorpusSquareBase, OrigamiSimulatorExportIsLocallyFlatFoldable) {
   EXPECT_EQ(ff[0].maekawa, std::optional<bool>(true));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

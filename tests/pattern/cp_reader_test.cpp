@@ -29,7 +29,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string oripa(const std::string& name) { return std::string(RIGIDFOLD_SOURCE_DIR) + "/tests/data/oripa/" + name; }
 
@@ -324,5 +324,5 @@ TEST_F(ReadPatternByContent, GarbageNamesTheFormats) {
   EXPECT_EQ(error_of_path(write("empty.fold", "")), (dir_ / "empty.fold").string() + ": file is empty");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

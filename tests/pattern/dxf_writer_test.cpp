@@ -18,7 +18,7 @@
 #include "kernel/pattern/length_scale.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::vector<std::pair<int, std::string>> groups(const std::string& text) {
   std::vector<std::pair<int, std::string>> out;
@@ -138,5 +138,5 @@ TEST(DxfWriter, RefusesAJoin) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -12,7 +12,7 @@
 #include "tests/support/expect_same_pattern.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const char* kSquareWithDiagonal = R"({
   "file_spec": 1.2, "file_creator": "hand", "file_classes": ["singleModel"],
@@ -86,5 +86,5 @@ TEST(FoldIo, WriteIsAtomicAndLeavesNoFileOnFailure) {
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

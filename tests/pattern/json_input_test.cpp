@@ -11,7 +11,7 @@
 #include "kernel/pattern/json_input.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const std::string kNested = R"({"b": [1, 2.5, {"c": null, "a": true}], "a": "x", "e": {}, "d": [], "f": -7})";
 
@@ -55,5 +55,5 @@ TEST(JsonInput, ManyKeysAreReadInLinearTime) {
   EXPECT_LT(seconds, 15.0);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -28,7 +28,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string data(const std::string& name) { return std::string(RIGIDFOLD_SOURCE_DIR) + "/tests/data/opx/" + name; }
 
@@ -564,5 +564,5 @@ TEST(OpxReader, OverlappingLinesStrictRefusesAsBefore) {
   EXPECT_EQ(warnings_with(p, "both as valley: merged into one edge").size(), 1u);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -23,7 +23,7 @@
 #include "kernel/solve/portable_random.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using generators::miura_ori;
 using generators::MiuraParams;
@@ -153,5 +153,5 @@ TEST(ScaleInvariance, CheckCommandGivesTheSameVerdictAtTheEndsOfTheScale) {
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

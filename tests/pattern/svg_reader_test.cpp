@@ -22,7 +22,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::string corpus(const std::string& rel) { return std::string(RIGIDFOLD_CORPUS_DIR) + "/" + rel; }
 
@@ -669,5 +669,5 @@ TEST(SvgReaderBadInput, LimitsAreEnforced) {
   expect_refused(svg(kSquare + "<path stroke=\"red\" d=\"" + d + "\"/>"), {"<path> #1", "line segments"});
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

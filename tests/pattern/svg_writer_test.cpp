@@ -29,7 +29,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::vector<std::string> bundled_files() {
   std::vector<std::string> files;
@@ -242,5 +242,5 @@ TEST(SvgWriter, RefusesAFoldedFormThatIsNotDevelopable) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "kernel/vertex/flat_foldable_multipliers.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 long binomial(int n, int k) {
   long r = 1;
@@ -77,5 +77,5 @@ TEST(VertexLetterRules, StrictMinimumNeedsOppositeLettersAndMaekawaHolds) {
   EXPECT_FALSE(letters_fold_flat(std::vector<double>(4, pi / 2), std::vector<int>{1, 1, 1, 0}));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -27,7 +27,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 
 Eigen::VectorXd fd_second_derivative(const ClosureSystem& sys, const Eigen::VectorXd& x, const Eigen::VectorXd& t) {
@@ -90,5 +90,5 @@ TEST(TangentCone, Seed001ModifiedSquareTwistsAtFlat) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -36,7 +36,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using mp = boost::multiprecision::cpp_bin_float_50;
 using Mat3 = std::array<std::array<mp, 3>, 3>;
@@ -489,5 +489,5 @@ TEST(BranchPoint, QuadraticConvergenceOnType2M) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

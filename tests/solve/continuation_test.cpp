@@ -15,7 +15,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::miura_edge_angles;
 
@@ -316,5 +316,5 @@ TEST(SolverContinuation, ReportsTheLinearSolverInUse) {
   EXPECT_EQ(small.result.linear_solver, "direct (CHOLMOD)");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::miura_edge_angles;
 using testing::random_vector;
@@ -358,5 +358,5 @@ TEST(MinimumNormSolverFactor, StaleFactorSolveMatchesTheFreshLeastSquaresStep) {
   EXPECT_EQ(short_run.dx.lpNorm<Eigen::Infinity>(), 0.0);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

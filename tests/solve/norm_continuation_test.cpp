@@ -21,7 +21,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::miura_edge_angles;
 
@@ -138,5 +138,5 @@ TEST(NormContinuation, RefusesBadArguments) {
   EXPECT_THROW(continue_by_norm(sys, Eigen::VectorXd::Ones(n), lo, hi, opt, none), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -18,7 +18,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::miura_edge_angles;
 using testing::random_vector;
@@ -287,11 +287,11 @@ TEST(SolverRank, FlatMiuraIsSingular) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // A sheet with no interior vertex has no closure row: every crease is free. (Eigen's SVD
 // crashed on a 0 x n matrix before this case was handled.)
@@ -306,5 +306,5 @@ TEST(SolverRank, NoRowsMeansEveryColumnIsFree) {
   EXPECT_EQ(none.dof, 0);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::miura_edge_angles;
 using testing::random_vector;
@@ -195,5 +195,5 @@ TEST(SolverStalePcg, RejectsHeldUnknownsAndWrongSizes) {
   EXPECT_THROW(stale_pcg_step(free, a, J, Eigen::VectorXd::Zero(2), a, 0.0), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -20,7 +20,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using Eigen::Matrix3d;
 using Eigen::Matrix4d;
@@ -400,5 +400,5 @@ TEST(SorceAxode, BadInputNamesThePlace) {
   EXPECT_EQ(place_of([&] { sampled_axode_residual(f, f, sample_axodes(f, f, {0.0}), {0.0}); }), "points");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -13,7 +13,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::kVertexA;
 PatternSorceRequest vertex_a_request(double h) { return testing::single_vertex_request(h); }
@@ -120,5 +120,5 @@ TEST(SorceCamInterference, CircularJointAloneDoesNotCountItsOwnRollingContact) {
   EXPECT_GT(c.pairs_tested, 0);  // each cam met the other panel's slab in the broad phase
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

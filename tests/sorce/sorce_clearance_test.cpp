@@ -15,7 +15,7 @@
 #include "tests/support/stl_mesh.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const std::string kVertexA = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/sorce/vertex_a.fold";
 
@@ -81,5 +81,5 @@ TEST(SorceClearance, VertexACutSlabsNoLongerMeetTheirMatesCams) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

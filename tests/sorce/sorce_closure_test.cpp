@@ -9,7 +9,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::vertex_a_linear;
 using testing::vertex_b_sectors;
@@ -58,5 +58,5 @@ TEST(SorceClosure, WrongSplitDirectionOpensTheLoop) {
   EXPECT_GT(vertex_closure(v, 0.5).error, 0.1);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -15,7 +15,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::vertex_a_linear;
 using testing::vertex_b_sectors;
@@ -184,5 +184,5 @@ TEST(SorceFoldReport, FigureOfMeritClipsWithEpsilon) {
   EXPECT_TRUE(std::isinf(figure_of_merit(r, 0.0)));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -17,7 +17,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // z_outer = -1.5 (t + sum b_o B) on panels 1 and 4, z_inner = 0.5 (t + sum b_i B) on panels 2
 // and 3 (eq 36, d = 1); b = (b_i1, b_i2, b_i3, b_o1, b_o2, b_o3).
@@ -226,5 +226,5 @@ TEST(SorceOptimize, BadInputThrowsInputErrorWithItsPlace) {
   expect_input_error([&] { evaluate_offsets(p, std::vector<double>(7, 0.0)); }, "b");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -25,7 +25,7 @@
 #include "tests/sorce/sorce_pattern_requests.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // A synthetic trace of vertex A: drive = fold 2 at equal steps pi k / N, rho per fold (eq 25).
 MotionBranch vertex_a_branch(int steps) {
@@ -195,5 +195,5 @@ TEST(SorcePathParameter, OptimizeOnTheTracedPathReachesAFeasibleAllConvexDesign)
               start, fom, min_c, o.evaluations, seconds);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

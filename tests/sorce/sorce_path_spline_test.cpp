@@ -13,7 +13,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const VertexSectors kVertexA = {to_radians(120.0), to_radians(80.0), to_radians(60.0), to_radians(100.0)};
 
@@ -85,5 +85,5 @@ TEST(SorcePathSpline, RejectsTooFewOrNonFiniteValues) {
   EXPECT_THROW(quintic_spline(v), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

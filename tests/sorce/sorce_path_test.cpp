@@ -16,7 +16,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::vertex_a_sectors;
 using testing::vertex_b_sectors;
@@ -129,5 +129,5 @@ TEST(SorcePath, CircularSplitOffsetIsEq67) {
   EXPECT_NEAR(circular_split_offset(r, gamma[2], gamma[1])(1.0)[0], 4 * r, 1e-15);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -14,7 +14,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::kVertexA;
 PatternSorceRequest vertex_a_request(double h) { return testing::single_vertex_request(h); }
@@ -55,5 +55,5 @@ TEST(SorcePatternCircular, BadRequestsNameThePlace) {
   EXPECT_EQ(place({1, 0}), "circular_edges[1]");  // face 0 is on folds 1 and 2, whose angles differ
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -16,7 +16,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 const VertexSectors kVertexA = {to_radians(120.0), to_radians(80.0), to_radians(60.0), to_radians(100.0)};
 
@@ -240,5 +240,5 @@ TEST(SorcePattern, BadInputNamesThePlace) {
   EXPECT_EQ(place(bad), "branch");
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

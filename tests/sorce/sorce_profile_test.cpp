@@ -15,7 +15,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::vertex_a_linear;
 using testing::vertex_b_split;
@@ -212,5 +212,5 @@ TEST(SorceProfile, UndefinedWhereGammaRateVanishes) {
   EXPECT_NO_THROW(profile_point(m, 0.4));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

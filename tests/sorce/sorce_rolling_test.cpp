@@ -12,7 +12,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::vertex_a_linear;
 using testing::vertex_b_sectors;
@@ -57,5 +57,5 @@ TEST(SorceRolling, WrongProfileIsNotRecovered) {
   EXPECT_GT(e.gamma, 1e-3);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

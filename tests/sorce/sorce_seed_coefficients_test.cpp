@@ -14,7 +14,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 struct Design {
   double min_convexity = 0.0, max_convexity = 0.0, fom = 0.0;
@@ -67,5 +67,5 @@ TEST(SorceSeedCoefficients, SignPatternOfEq39MakesEveryProfileConvex) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -18,7 +18,7 @@
 #include "tests/support/stl_mesh.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using Eigen::Vector3d;
 using rigidfold::testing::enclosed_volume;
@@ -204,5 +204,5 @@ TEST(SorceDxf, ProfilesReadBackExactly) {
   EXPECT_THROW(fold_profiles_dxf(folds, 1), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

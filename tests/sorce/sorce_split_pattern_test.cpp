@@ -20,7 +20,7 @@
 #include "kernel/pattern/input_error.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using testing::kVertexB;
 const VertexSectors kSectorsB = {to_radians(135.0), to_radians(45.0), to_radians(45.0), to_radians(135.0)};
@@ -115,5 +115,5 @@ TEST(SorceSplitPattern, SpecsAndBadSplitsNameThePlace) {
   EXPECT_EQ(place({{0, constant_function(0.1)}}), "splits[0]");                              // d(0) != 0
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

@@ -12,7 +12,7 @@
 #include "tests/sorce/sorce_examples.hpp"
 
 namespace rigidfold::sorce {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // The points of every <polyline class="cls" ...>, in document order.
 std::vector<std::vector<Vec2>> polylines(const std::string& svg, const std::string& cls) {
@@ -69,5 +69,5 @@ TEST(SorceSvg, FoldGroupHasSlabFacesAtHalfThickness) {
   EXPECT_THROW(fold_profiles_svg_group(v.folds[1], bad), InputError);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::sorce

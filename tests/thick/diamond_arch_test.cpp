@@ -24,7 +24,7 @@
 #include "kernel/thick/thick_mobility.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -271,5 +271,5 @@ TEST(DiamondArch, BundledThickFoldIsTheGeneratorsSheet) {
               r.letter_disagreements);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -14,7 +14,7 @@
 #include "tests/closure/closure_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -77,5 +77,5 @@ TEST(ThickHeights, BennettThicknessAsHingeHeights) {
               worst, zigzag_least);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -10,7 +10,7 @@
 #include "kernel/thick/panel_compatibility.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -71,5 +71,5 @@ TEST(ThickCompatibility, RejectsAVertexWhoseSectorsDoNotMatch) {
   EXPECT_THROW(agreed_panel_thickness(2, {PanelThicknessClaim{"v", 0, 2, 0.1}}), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

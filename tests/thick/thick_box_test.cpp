@@ -21,7 +21,7 @@
 #include "kernel/thick/vertex_height_steps.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kA = kPi / 6;
@@ -128,5 +128,5 @@ TEST(ThickBox, SixMyardVerticesAreMobileWithOneDofAndFollowTheZeroThicknessMotio
               worst, steps, off, folded.dof, folded.rank.sigma_kept, folded.rank.threshold, zero_dof);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

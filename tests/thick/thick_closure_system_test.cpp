@@ -16,7 +16,7 @@
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -186,5 +186,5 @@ TEST(ThickSheet, ClosesWhereTheDhLoopClosesAndRefusesOtherInput) {
   EXPECT_THROW(thick_sheet_from_loop(two_loops, closed), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -24,7 +24,7 @@
 #include "kernel/thick/thick_slabs.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -342,5 +342,5 @@ TEST(ThickStacking, ValleySideHingesStopAtTheFlatState) {
   EXPECT_EQ(r.stacking.letter_disagreements, static_cast<int>(r.stacking.creases.size()));
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

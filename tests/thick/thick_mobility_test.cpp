@@ -12,7 +12,7 @@
 #include "kernel/thick/thick_mobility.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -69,5 +69,5 @@ TEST(ThickMobility, RejectsAStateThatDoesNotClose) {
   EXPECT_THROW(thick_mobility(sheet, twist.zero_states()[3], {}), std::invalid_argument);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

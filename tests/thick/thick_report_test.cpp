@@ -18,7 +18,7 @@
 #include "kernel/thick/thick_report.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 struct Flat {
   CreasePattern pattern;
@@ -195,5 +195,5 @@ TEST(ThickReport, RefusesABadThicknessAFoldedFormOrAValleyPlacementWithoutLetter
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

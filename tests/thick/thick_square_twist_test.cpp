@@ -17,7 +17,7 @@
 #include "kernel/thick/hinge_heights.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -110,5 +110,5 @@ TEST(ThickSquareTwist, Type4HasNoUniformBennettHeights) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

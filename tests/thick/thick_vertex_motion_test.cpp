@@ -23,7 +23,7 @@
 #include "kernel/vertex/vertex_closure.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -260,5 +260,5 @@ TEST(ThickBricard, WaterbombWithMuOneFoldsLikeTheZeroThicknessVertex) {
   expect_same_motion(waterbomb_vertex(1.0, 0.1), [](double r0) { return waterbomb_zero_thickness(r0); });
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -15,7 +15,7 @@
 #include "kernel/thick/thick_vertex_models.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -102,5 +102,5 @@ TEST(ThickWaterbomb, MuOneHalfLeavesTheZeroThicknessMotion) {
   std::printf("thick waterbomb mu = 0.5: largest |rho - rho_zero| at equal rho0 %.3f rad\n", largest);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

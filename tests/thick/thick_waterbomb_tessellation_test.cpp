@@ -16,7 +16,7 @@
 #include "kernel/thick/vertex_height_steps.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -121,5 +121,5 @@ TEST(ThickWaterbombTessellation, NonCompactBricardLengthsHaveNoCommonHeights) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -21,7 +21,7 @@
 #include "kernel/thick/thick_vertex_models.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -130,5 +130,5 @@ TEST(ThickVertexHeights, WaterbombMuOneHalfIsMobileAloneButOffTheZeroThicknessMo
               report.vertices[0].off_motion, moved.dof, largest);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

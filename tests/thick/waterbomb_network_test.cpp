@@ -24,7 +24,7 @@
 #include "kernel/thick/waterbomb_network.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -243,5 +243,5 @@ TEST(ThickWaterbombPattern, MuOneHalfLosesMobilityAndTheWVerticesAreNamed) {
               t.least_residual, t.worst_residual, t.all_stationary ? "yes" : "no", flat.dof, flat_mu1.dof);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

@@ -17,7 +17,7 @@
 #include "reference/miura_reference.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 // Ends and interior of --alpha1/--alpha2 (degrees): [1e-300, 90 - 1e-12].
 const std::vector<double> kAlphaDeg{1e-300, 1e-170, 1e-30, 1e-12, 1e-6, 0.5, 30, 45, 60, 89, 90 - 1e-6, 90 - 1e-12};
@@ -159,5 +159,5 @@ TEST(ClosedFormRange, S4RInsideTheRangeAlwaysAnswers) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

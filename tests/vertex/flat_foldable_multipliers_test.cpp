@@ -10,7 +10,7 @@
 #include "tests/vertex/vertex_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using test::angle_distance;
 using test::as_span;
@@ -265,5 +265,5 @@ TEST(MultiplierSeedMapping, Seed001SquareTwistEq5And7) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

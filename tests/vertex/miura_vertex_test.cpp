@@ -20,7 +20,7 @@
 #include "tests/vertex/vertex_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using test::as_span;
 using test::Real50;
@@ -366,5 +366,5 @@ TEST(MiuraVertex, PrintedFormLosesAccuracyWhereTheRewriteDoesNot) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

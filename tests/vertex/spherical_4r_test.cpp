@@ -11,7 +11,7 @@
 #include "tests/vertex/vertex_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using test::angle_distance;
 using test::as_span;
@@ -338,5 +338,5 @@ TEST(S4RSeedMapping, Seed001SquareTwistVertexEq5) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

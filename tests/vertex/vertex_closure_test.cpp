@@ -8,7 +8,7 @@
 #include "tests/vertex/vertex_test_utils.hpp"
 
 namespace rigidfold {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 using test::as_span;
 using test::uniform;
@@ -208,5 +208,5 @@ TEST(VertexSo3Log, LeftJacobianInverseIsAccurateAroundSeriesSwitch) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold

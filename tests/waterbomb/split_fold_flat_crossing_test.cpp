@@ -21,7 +21,7 @@
 #include "tests/waterbomb/stopped_curve_expectations.hpp"
 
 namespace rigidfold::waterbomb {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::vector<int> half_valleys(int n) {
   std::vector<int> v;
@@ -216,5 +216,5 @@ TEST(SplitFoldFlatCrossing, FlippedLetterStopsTheCurveAtFlat) {
   }
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::waterbomb

@@ -15,7 +15,7 @@
 #include "kernel/pattern/topology.hpp"
 
 namespace rigidfold::waterbomb {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 TEST(SplitFoldNearContact, WideSplitFacetsStaySymmetricAndStableUpToThetaMax) {
   const int n = 3;
@@ -56,5 +56,5 @@ TEST(SplitFoldNearContact, WideSplitFacetsStaySymmetricAndStableUpToThetaMax) {
   EXPECT_EQ(c.unchecked, 0);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::waterbomb

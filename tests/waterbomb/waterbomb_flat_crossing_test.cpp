@@ -22,7 +22,7 @@
 #include "tests/waterbomb/stopped_curve_expectations.hpp"
 
 namespace rigidfold::waterbomb {
-namespace {
+namespace { namespace RIGIDFOLD_UNITY_ID {
 
 std::vector<int> valley_creases(const CreasePattern& p) {
   std::vector<int> v;
@@ -150,5 +150,5 @@ TEST(WaterbombFlatCrossing, FlippedLetterStopsTheCurveAtFlat) {
   test::expect_only_the_near_side_checked(curve);
 }
 
-}  // namespace
+}}  // namespace
 }  // namespace rigidfold::waterbomb
