@@ -1,8 +1,6 @@
 #include "kernel/pattern/cp_reader.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <optional>

@@ -1,7 +1,6 @@
 #include "kernel/pattern/opx_reader.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
