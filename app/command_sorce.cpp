@@ -186,7 +186,7 @@ void add_sorce_command(CLI::App& app) {
                              "driving crease's final fold angle, t = 1 (degrees, signed; default 170 in its letter's direction; "
                              "+-180 for joints that reach the flat-folded state)")
                  ->check(finite_in(-180, 180, "degrees"));
-  cmd->add_option("--steps", a->steps, "traced steps (8..2000; the path is a quintic spline through them)")->check(CLI::Range(8, 2000));
+  cmd->add_option("--steps", a->steps, "traced steps to start from (8..2000; a splined path is refined until its diagnostics settle)")->check(CLI::Range(8, 2000));
   cmd->add_option("--parameter", a->parameter,
                   "the path's parameter t: drive (t = drive / final drive; default), arc-length (t = arc length in "
                   "fold-angle space / total) or half-tangent (tan(pi t/2) ~ geometric mean of |tan(rho/2)|, the seed's "
@@ -292,12 +292,20 @@ void add_sorce_command(CLI::App& app) {
     path["parameter"] = to_string(s.path.parameter);
     path["arc_length_deg"] = to_degrees(s.path.arc_length);
     path["knots"] = s.path.knots.size();
+    path["exact"] = d.refinement.exact;
+    path["steps_tried"] = d.refinement.steps_tried;
+    path["accuracy"] = {{"t_tolerance", rq.accuracy.t_tolerance},
+                        {"length_tolerance_relative", rq.accuracy.length_tolerance},
+                        {"max_doublings", rq.accuracy.max_doublings}};
+    path["settled"] = d.refinement.settled;
+    if (!d.refinement.settled) path["unsettled"] = d.refinement.change;
     path["parameter_definition"] = s.path.parameter == PathParameter::kArcLength
                                        ? "t = arc length in fold-angle space / total, quintic spline per crease"
                                        : s.path.parameter == PathParameter::kHalfTangent
                                              ? "tan(pi t/2) ~ geometric mean of |tan(rho/2)| over folding creases "
                                                "(seed eq 35 on one vertex), quintic spline per crease"
-                                             : "t = drive / final drive, quintic spline per crease";
+                                             : s.path.exact ? "t = drive / final drive, the multiplier model's exact fold angles"
+                                                            : "t = drive / final drive, quintic spline per crease";
     j["path"] = path;
     Json faces = Json::array();
     for (std::size_t f = 0; f < s.faces.size(); ++f)
@@ -407,12 +415,7 @@ void add_sorce_command(CLI::App& app) {
       return;
     }
     std::cout << a->pattern << ": SORCE joints on " << reports.size() << " folding crease(s), thickness " << a->thickness << "\n";
-    std::cout << "  path: crease " << s.path.drive << " to " << to_degrees(s.path.final_drive) << " deg, " << s.path.knots.size()
-              << " knots\n";
-    std::cout << "  figure of merit " << j["figure_of_merit"].dump() << ", flat-folded end " << (s.checks.flat_folded_end ? "yes" : "no")
-              << ", all stack " << (s.checks.all_stack ? "yes" : "no") << "\n";
-    if (d.optimization) std::cout << "  optimised: figure of merit " << j["optimization"]["figure_of_merit"].dump() << ", feasible "
-                                  << (d.optimization->feasible ? "yes" : "no") << "\n";
+    std::cout << brief(d, rq.epsilon);
     if (!a->out.empty()) std::cout << "  wrote " << a->out << "\n";
   });
 }

@@ -128,9 +128,6 @@ FoldReport fold_report(const FoldMotion& m, const ReportOptions& options) {
   r.s0 = initial_contact_offset(m);
   if (dg.front() != 0.0 && dg.back() != 0.0) r.ends = end_points(m);
 
-  r.concave_left = negative_spans(tp, cl, [&](double t) { return point_at(m, t).convexity_left; });
-  r.concave_right = negative_spans(tp, cr, [&](double t) { return point_at(m, t).convexity_right; });
-
   r.min_turn_radius = kInf;
   r.max_speed = *std::max_element(speed.begin(), speed.end());
   r.min_speed = *std::min_element(speed.begin(), speed.end());
@@ -145,17 +142,28 @@ FoldReport fold_report(const FoldMotion& m, const ReportOptions& options) {
       if (std::abs(t - z) <= 2.0 / (n - 1)) return true;
     return false;
   };
-  // At a pivot the curvature diverges; rounding leaves |s'| ~ 1e-16 there, so make the
-  // sampled end convexities the infinities they are (with their sampled signs).
-  auto diverge = [](double& c) { c = std::copysign(kInf, c); };
+  // At a pivot the curvature diverges; rounding leaves |s'| ~ 1e-16 there, so the sampled end
+  // convexity is noise, sign included. The concave spans take the sign of its limit, that of
+  // the next sample in, where |s'| is not small (else the noise makes a span of width ~1e-8 at
+  // the pivot). The extremes keep the infinity with its sampled sign, which the offset search
+  // was tuned on (sorce_optimize_test.cpp: with the limit's sign, the search from linear
+  // offsets on vertex A finds no feasible design).
+  std::vector<double> span_cl = cl, span_cr = cr;
+  auto diverge = [](double& c, double sign) { c = std::copysign(kInf, sign); };
   if (r.pivot_at_start) {
-    diverge(cl.front());
-    diverge(cr.front());
+    diverge(span_cl.front(), cl[1]);
+    diverge(span_cr.front(), cr[1]);
+    diverge(cl.front(), cl.front());
+    diverge(cr.front(), cr.front());
   }
   if (r.pivot_at_end) {
-    diverge(cl.back());
-    diverge(cr.back());
+    diverge(span_cl.back(), cl[last - 1]);
+    diverge(span_cr.back(), cr[last - 1]);
+    diverge(cl.back(), cl.back());
+    diverge(cr.back(), cr.back());
   }
+  r.concave_left = negative_spans(tp, span_cl, [&](double t) { return point_at(m, t).convexity_left; });
+  r.concave_right = negative_spans(tp, span_cr, [&](double t) { return point_at(m, t).convexity_right; });
   r.min_convexity_left = *std::min_element(cl.begin(), cl.end());
   r.max_convexity_left = *std::max_element(cl.begin(), cl.end());
   r.min_convexity_right = *std::min_element(cr.begin(), cr.end());

@@ -73,6 +73,16 @@ ScalarFunction tan_half_fold(double k) {
   };
 }
 
+ScalarFunction tan_half_path(double k, double theta) {
+  if (!std::isfinite(k)) throw InputError("k", "the tan-half multiplier must be finite");
+  if (!(std::abs(theta) <= kPi) || theta == 0.0) throw InputError("theta", "the final drive must be in [-pi, pi] and not 0");
+  if (k == 0.0) return constant_function(0.0);
+  return [k, theta](double t) {
+    const auto a = (theta / 2) * make_fvar<double, 3>(t);
+    return detail::to_jet<3>(2.0 * atan2(k * sin(a), cos(a)));
+  };
+}
+
 ScalarFunction linear_fold(double gamma_end) {
   return [gamma_end](double t) { return Jet{gamma_end * t, gamma_end, 0.0, 0.0}; };
 }

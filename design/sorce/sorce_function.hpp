@@ -47,6 +47,10 @@ ScalarFunction basis_offset(double end_value, const std::vector<double>& b, cons
 // 0 at t = 0, pi sign(k) at t = 1, computed without tan so that t = 1 is exact. Eqs 24-25
 // and 35 are of this form (k = 1, 1/mu, sqrt(mu), 1/sqrt(mu), with signs). k != 0.
 ScalarFunction tan_half_fold(double k);
+// The multiplier model's fold angle on the drive parameter, gamma = 2 atan(k tan(theta t / 2))
+// = 2 atan2(k sin(theta t / 2), cos(theta t / 2)) for a drive that reaches theta at t = 1
+// (|theta| <= pi; theta = pi is tan_half_fold(k)); k = 0 is a crease that stays flat.
+ScalarFunction tan_half_path(double k, double theta);
 // gamma = gamma_end * t (the circular CORE joint's eq 1 with gamma_end = pi).
 ScalarFunction linear_fold(double gamma_end);
 

@@ -190,7 +190,12 @@ PathSpline path_spline(const MotionBranch& branch, int num_edges, PathParameter 
     path.samples.col(k) = s.rho;
   }
   path.rho.reserve(num_edges);
+  path.exact = static_cast<int>(branch.tan_half_ratio.size()) == num_edges;
   for (int e = 0; e < num_edges; ++e) {
+    if (path.exact) {
+      path.rho.push_back(tan_half_path(branch.tan_half_ratio[e], path.final_drive));
+      continue;
+    }
     const Eigen::VectorXd row = path.samples.row(e).transpose();
     path.rho.push_back(quintic_spline(std::vector<double>(row.data(), row.data() + row.size())));
   }

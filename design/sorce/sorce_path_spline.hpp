@@ -61,8 +61,14 @@ struct PathSpline {
                                   // (equally spaced for kDrive; increasing, 0 and 1 at the ends, for kArcLength)
   Eigen::MatrixXd samples;        // rho per edge (rows) at each knot (columns), radians
   std::vector<ScalarFunction> rho;  // per edge (non-hinge edges: their samples, 0 for a flat sheet)
+  // The branch's exact path (MotionBranch::tan_half_ratio, the multiplier model) instead of the
+  // splines: rho_e on the drive parameter is then exact at every t, whatever the step count.
+  // The arc-length and half-tangent parameters still map t through their tau(t) spline.
+  bool exact = false;
 };
 
+// A branch that carries the multiplier model's exact path (tan_half_ratio) gets that path
+// instead of the splines (PathSpline::exact); the knots and samples are the same.
 // Inputs: a traced branch (steps with rho per edge, equally spaced drive angles as
 // trace_motion gives them, flat state excluded) and the number of edges. Throws
 // InputError("branch") if it is not traced or has fewer than 7 steps, or if its drive

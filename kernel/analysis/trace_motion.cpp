@@ -66,6 +66,9 @@ MotionBranch trace_family(const FoldFamily& f, int c, int drive, double to, int 
   b.stop = std::fabs(to) >= kPi ? StopReason::kFoldLimit : StopReason::kTargetReached;
   b.stopped_by = std::fabs(to) >= kPi ? "driving crease reaches 180 deg (fully folded; local interference limit)"
                                       : "target driving angle reached";
+  b.tan_half_ratio.assign(f.multiplier.size(), 0.0);
+  for (std::size_t e = 0; e < f.multiplier.size(); ++e)
+    if (f.component[e] == c) b.tan_half_ratio[e] = f.multiplier[e] / f.multiplier[drive];
   for (int k = 1; k <= steps; ++k) {
     const double d = to * k / steps;
     const double t = std::fabs(d) >= kPi ? std::copysign(std::numeric_limits<double>::infinity(), d / f.multiplier[drive])

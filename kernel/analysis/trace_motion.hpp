@@ -86,6 +86,10 @@ struct MotionBranch {
   std::string stopped_by;        // why the trace ends where it does, for the user
   std::string message;           // why not traced, or a warning
   std::vector<MotionStep> steps;
+  // The multiplier model's exact path, tan(rho_e / 2) = tan_half_ratio[e] * tan(rho_drive / 2)
+  // for every edge (0: stays flat), so that a caller who analyses the path between the steps
+  // (SORCE's profiles) need not interpolate them; empty for every other model.
+  std::vector<double> tan_half_ratio;
   std::vector<MotionEvent> events;
   double max_residual = 0.0, max_mismatch = 0.0;
   // The general solver's continuation: its corrector's linear solver

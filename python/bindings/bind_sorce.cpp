@@ -14,7 +14,9 @@
 
 namespace rigidfold::python {
 
-namespace {
+// A named namespace, so that its using-directive reaches no other bindings file compiled in
+// the same unity unit.
+namespace sorce_bindings {
 
 using namespace rigidfold::sorce;
 
@@ -87,9 +89,10 @@ py::dict vertex_dict(const SorceVertex& v, int samples) {
   return d;
 }
 
-}  // namespace
+}  // namespace sorce_bindings
 
 void bind_sorce(py::module_& m) {
+  using namespace sorce_bindings;
   m.def(
       "sorce_vertex",
       [](const std::array<double, 4>& sectors, const std::array<double, 4>& end_offsets, const std::array<double, 4>& thickness,
