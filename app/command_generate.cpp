@@ -1,7 +1,7 @@
 // rigidfold generate KIND [options] --out FILE.fold
 // rigidfold generate bundle --out-dir DIR
 //
-// KIND: miura | miura-tube | square-twist | square-twist-tessellation | waterbomb | corrugated-p | corrugated-q, or `bundle` to write
+// KIND: miura | miura-tube | square-twist | square-twist-tessellation | waterbomb | corrugated-p | corrugated-q | resch-triangle, or `bundle` to write
 // every pattern of bundled_examples() as DIR/NAME.fold. Angles are given in degrees.
 // A flag that does not apply to KIND, or a bad value, is an InputError naming the flag.
 #include <filesystem>
@@ -18,6 +18,7 @@
 #include "data/generators/generator_common.hpp"
 #include "data/generators/miura.hpp"
 #include "data/generators/miura_tube.hpp"
+#include "data/generators/resch_triangle.hpp"
 #include "data/generators/square_twist.hpp"
 #include "data/generators/square_twist_tessellation.hpp"
 #include "data/generators/waterbomb.hpp"
@@ -65,6 +66,7 @@ const std::map<std::string, std::set<std::string>>& accepted_flags() {
       {"waterbomb", {"--n", "--radius", "--corners"}},
       {"corrugated-p", {"--alpha-deg", "--beta-deg", "--a", "--b", "--assignment", "--odd"}},
       {"corrugated-q", {"--alpha-deg", "--beta-deg", "--a", "--b", "--assignment", "--odd"}},
+      {"resch-triangle", {"--rows", "--cols", "--side"}},
       {"bundle", {}},
   };
   return m;
@@ -186,6 +188,14 @@ CreasePattern make_waterbomb(const GenerateOptions& o) {
   return with_flags([&] { return gen::waterbomb_base(p); });
 }
 
+CreasePattern make_resch_triangle(const GenerateOptions& o) {
+  gen::ReschTriangleParams p;
+  p.rows = o.rows;
+  p.cols = o.cols;
+  p.side = o.side;
+  return with_flags([&] { return gen::resch_triangle(p); });
+}
+
 CreasePattern make_corrugated(const GenerateOptions& o, gen::CorrugatedUnit unit, bool assignment_given, bool odd_given) {
   gen::CorrugatedParams p;
   p.alpha = to_radians(o.alpha_deg.value_or(135));
@@ -232,7 +242,7 @@ void run(const GenerateOptions& o, CLI::App& sub) {
   auto kind_it = accepted.find(o.kind);
   if (kind_it == accepted.end())
     throw InputError("KIND", "unknown pattern kind '" + o.kind +
-                                 "' (expected miura, miura-tube, square-twist, square-twist-tessellation, waterbomb, corrugated-p, corrugated-q or bundle)");
+                                 "' (expected miura, miura-tube, square-twist, square-twist-tessellation, waterbomb, corrugated-p, corrugated-q, resch-triangle or bundle)");
   auto given = [&](const std::string& flag) { return sub.get_option(flag)->count() > 0; };
   for (const auto& [other_kind, flags] : accepted)
     for (const auto& flag : flags)
@@ -267,6 +277,7 @@ void run(const GenerateOptions& o, CLI::App& sub) {
   else if (o.kind == "square-twist") pattern = make_square_twist(o, given("--assignment"), given("--diagonal"), given("--type"));
   else if (o.kind == "square-twist-tessellation") pattern = make_square_twist_tessellation(o);
   else if (o.kind == "waterbomb") pattern = make_waterbomb(o);
+  else if (o.kind == "resch-triangle") pattern = make_resch_triangle(o);
   else if (o.kind == "corrugated-p") pattern = make_corrugated(o, gen::CorrugatedUnit::P, given("--assignment"), given("--odd"));
   else pattern = make_corrugated(o, gen::CorrugatedUnit::Q, given("--assignment"), given("--odd"));
   outputs.stage(o.out, write_fold_string(pattern));
@@ -280,7 +291,7 @@ void add_generate_command(CLI::App& app) {
   auto opts = std::make_shared<GenerateOptions>();
   CLI::App* sub = app.add_subcommand("generate", "Write a generated crease pattern (FOLD)");
   sub->footer(
-      "KIND: miura | miura-tube | square-twist | square-twist-tessellation | waterbomb | corrugated-p | corrugated-q | bundle\n"
+      "KIND: miura | miura-tube | square-twist | square-twist-tessellation | waterbomb | corrugated-p | corrugated-q | resch-triangle | bundle\n"
       "  miura          --rows --cols (panels) --alpha-deg (acute angle, default 60) --a (zig-zag length)\n"
       "                 --b (straight length) [--perturb AMP --seed S] [--fold-deg RHO: closed-form fold]\n"
       "  miura-tube     --rows (cells along the tube) --alpha-deg --a --b --fold-deg (straight creases of\n"
@@ -293,12 +304,14 @@ void add_generate_command(CLI::App& app) {
       "  waterbomb      --n (mountain folds, default 4) --radius --corners M|V\n"
       "  corrugated-p/q --alpha-deg (default 135) --beta-deg (default 60) --a --b\n"
       "                 --assignment LETTERS (12) or --odd DDDD (odd joint 3|4 per vertex); default rigid\n"
+      "  resch-triangle --rows (grid rows) --cols (grid edges along x) --side (grid triangle side):\n"
+      "                 Resch's triangle tessellation, the faces whose centroids lie in the rectangle\n"
       "  bundle         --out-dir DIR: every bundled example as DIR/NAME.fold");
   sub->add_option("kind", opts->kind, "Pattern kind")->required();
   sub->add_option("--out", opts->out, "Output .fold file");
   sub->add_option("--out-dir", opts->out_dir, "Output directory (bundle)");
-  sub->add_option("--rows", opts->rows, "Miura: panels along y");
-  sub->add_option("--cols", opts->cols, "Miura: panels along x");
+  sub->add_option("--rows", opts->rows, "Miura: panels along y; Resch triangle: grid rows");
+  sub->add_option("--cols", opts->cols, "Miura: panels along x; Resch triangle: grid edges along x");
   sub->add_option("--alpha-deg", opts->alpha_deg, "Miura: acute panel angle; corrugated: sector alpha (deg)");
   sub->add_option("--beta-deg", opts->beta_deg, "Corrugated: sector beta (deg)");
   sub->add_option("--a", opts->a, "Miura: zig-zag length; corrugated: i-edge length");
@@ -310,7 +323,7 @@ void add_generate_command(CLI::App& app) {
   sub->add_option("--type", opts->type, "Square twist: 1, 2, 3, 4, 1M or 2M");
   sub->add_option("--assignment", opts->assignment, "Interior crease letters (M/V/F/U)");
   sub->add_option("--diagonal", opts->diagonal, "Square twist with --assignment: none, BD or AC");
-  sub->add_option("--side", opts->side, "Square twist: central square side");
+  sub->add_option("--side", opts->side, "Square twist: central square side; Resch triangle: grid triangle side");
   sub->add_option("--pleat", opts->pleat, "Square twist: outer crease length");
   sub->add_option("--spacing", opts->spacing, "Square-twist tessellation: twist centre to centre");
   sub->add_option("--layout", opts->layout, "Square-twist tessellation: type4, type3-rows, type1 or type2");

@@ -67,7 +67,7 @@ Json crease_pattern_json(const LinkageNetwork& net, const NetworkCreasePattern& 
   Json c;
   c["file"] = file;
   c["vertices"] = cp.pattern.num_vertices();
-  c["creases"] = cp.pattern.num_edges() - 8;
+  c["creases"] = cp.num_creases();
   c["central_angle_sum_deg"] = to_degrees(cp.central_angle_sum);
   c["vertex_linkages"] = cp.vertex_linkage;
   Json o = Json::object();
@@ -148,7 +148,7 @@ void print_text(std::FILE* text, const std::string& path, const NetworkSpec& spe
   }
   if (r.crease_pattern) {
     std::fprintf(text, "crease pattern: %d vertices, %d creases (letters %s), vertex loops close to %.1e rad; wrote %s\n",
-                 r.crease_pattern->pattern.num_vertices(), r.crease_pattern->pattern.num_edges() - 8,
+                 r.crease_pattern->pattern.num_vertices(), r.crease_pattern->num_creases(),
                  r.crease_pattern->crease_letters().c_str(),
                  r.crease_pattern->residual, out.c_str());
   }

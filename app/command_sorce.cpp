@@ -51,6 +51,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 #include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/read_pattern.hpp"
+#include "report/sorce_json.hpp"
 
 namespace rigidfold::cli {
 namespace {
@@ -58,84 +59,10 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 using namespace rigidfold::sorce;
-
-Json spans(const std::vector<Span>& s) {
-  Json a = Json::array();
-  for (const Span& x : s) a.push_back({x.begin, x.end});
-  return a;
-}
-
-// Infinite convexities (pivots, cusps) as null: JSON has no infinity.
-Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(); }
-
-Json crease_json(const CreaseJoint& j) {
-  const FoldReport& r = j.report;
-  Json c;
-  c["edge"] = j.edge;
-  c["left_face"] = j.left_face;
-  c["right_face"] = j.right_face;
-  c["folds"] = j.folds;
-  if (!j.folds) return c;
-  c["s0"] = r.s0;
-  c["arc_length"] = {r.arc_length_left, r.arc_length_right};
-  c["convexity_left"] = {finite_or_null(r.min_convexity_left), finite_or_null(r.max_convexity_left)};
-  c["convexity_right"] = {finite_or_null(r.min_convexity_right), finite_or_null(r.max_convexity_right)};
-  c["concave_left"] = spans(r.concave_left);
-  c["concave_right"] = spans(r.concave_right);
-  c["cusps"] = r.cusps;
-  c["ill_behaved"] = r.ill_behaved;
-  c["stationary"] = r.stationary;
-  c["pivot_at_start"] = r.pivot_at_start;
-  c["pivot_at_end"] = r.pivot_at_end;
-  c["protrusion"] = {r.protrusion_left, r.protrusion_right};
-  c["rolling_residual"] = r.max_rolling_residual;
-  c["contact_residual"] = r.max_contact_residual;
-  c["end_separation"] = r.end_separation;
-  c["stacks"] = r.stacks;
-  c["consistency"] = j.consistency;
-  c["pitch"] = j.pitch;
-  c["contact_3d"] = j.contact;
-  c["rolled_gamma"] = finite_or_null(j.rolled_gamma);
-  c["rolled_translation"] = finite_or_null(j.rolled_translation);
-  return c;
-}
-
-Json checks_json(const PatternChecks& k) {
-  Json c;
-  c["consistency"] = k.consistency;
-  c["pitch"] = k.pitch;
-  c["closure_knots"] = k.closure_knots;
-  c["closure_samples"] = k.closure_samples;
-  c["contact_3d"] = k.contact;
-  c["rolling_residual"] = k.rolling;
-  c["contact_residual"] = k.contact_planar;
-  c["rolled_gamma"] = k.rolled_gamma;
-  c["rolled_translation"] = k.rolled_translation;
-  c["not_rolled"] = k.not_rolled;
-  c["flat_folded_end"] = k.flat_folded_end;
-  c["all_stack"] = k.all_stack;
-  Json inter = Json::array();
-  for (const SlabInterference& s : k.interference)
-    for (const auto& [a, b] : s.face_pairs) inter.push_back({{"t", s.t}, {"faces", {a, b}}});
-  c["slab_interference"] = inter;
-  c["interference_skipped_faces"] = k.skipped_faces;
-  return c;
-}
-
-Json cam_interference_json(const CamInterference& c) {
-  Json out;
-  out["checked"] = true;
-  out["samples"] = c.times.size();
-  out["passed"] = c.collisions.empty();
-  out["pairs_tested"] = c.pairs_tested;
-  out["rolling_partner_pairs_skipped"] = c.partner_pairs_skipped;
-  Json hits = Json::array();
-  for (const CamCollision& h : c.collisions)
-    hits.push_back({{"t", h.t}, {"faces", {h.face_a, h.face_b}}, {"cam_edges", {h.edge_a, h.edge_b}}});
-  out["collisions"] = hits;  // edge -1: that shell is the panel's slab
-  if (!c.collisions.empty()) out["first"] = hits[0];
-  return out;
-}
+using report::cam_interference_json;
+using report::checks_json;
+using report::crease_json;
+using report::finite_or_null;
 
 std::vector<Polygon3> placed_panels(const std::vector<PanelSolid>& solids, const std::vector<Eigen::Isometry3d>& poses) {
   std::vector<Polygon3> all;
@@ -299,13 +226,7 @@ void add_sorce_command(CLI::App& app) {
                         {"max_doublings", rq.accuracy.max_doublings}};
     path["settled"] = d.refinement.settled;
     if (!d.refinement.settled) path["unsettled"] = d.refinement.change;
-    path["parameter_definition"] = s.path.parameter == PathParameter::kArcLength
-                                       ? "t = arc length in fold-angle space / total, quintic spline per crease"
-                                       : s.path.parameter == PathParameter::kHalfTangent
-                                             ? "tan(pi t/2) ~ geometric mean of |tan(rho/2)| over folding creases "
-                                               "(seed eq 35 on one vertex), quintic spline per crease"
-                                             : s.path.exact ? "t = drive / final drive, the multiplier model's exact fold angles"
-                                                            : "t = drive / final drive, quintic spline per crease";
+    path["parameter_definition"] = parameter_definition(s.path);
     j["path"] = path;
     Json faces = Json::array();
     for (std::size_t f = 0; f < s.faces.size(); ++f)
@@ -347,24 +268,7 @@ void add_sorce_command(CLI::App& app) {
     Json bounds = Json::object();
     for (const auto& [name, bound] : verdict.bounds) bounds[name] = bound;
     j["check_bounds"] = bounds;
-    if (d.optimization) {
-      const OffsetDesign& o = *d.optimization;
-      Json opt;
-      opt["algorithm"] = o.algorithm;
-      opt["stop_reason"] = o.stop_reason;
-      opt["evaluations"] = o.evaluations;
-      opt["feasible"] = o.feasible;
-      opt["improved"] = o.improved;
-      opt["figure_of_merit"] = finite_or_null(o.fom);
-      opt["min_convexity"] = finite_or_null(o.min_convexity);
-      opt["faces"] = d.design_faces;
-      opt["coefficients"] = o.b;
-      Json binding = Json::array();
-      for (const BindingConstraint& b : o.binding)
-        binding.push_back({{"name", b.name}, {"index", b.index}, {"value", b.value}, {"bound", b.bound}});
-      opt["binding"] = binding;
-      j["optimization"] = opt;
-    }
+    if (d.optimization) j["optimization"] = report::optimization_json(*d.optimization, d.design_faces);
 
     if (!a->out.empty()) {
       std::vector<NamedFold> folds;

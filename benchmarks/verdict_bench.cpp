@@ -4,8 +4,8 @@
 // reports the error reached: "max_defect" (loop gain) / "mismatch" for the multiplier
 // path; "residual" and "error_vs_closed_form" for the corrector.
 //
-// The general cases beside the Miura: `check`'s front door (check_foldability) on every
-// crease-pattern file of the corpus (tests/data/corpus, as for the tests), and the
+// The general cases beside the Miura: `check`'s front door (check_foldability) on Resch
+// triangle tessellations of 376 to ~4,000 creases and on every crease-pattern file of the corpus (tests/data/corpus, as for the tests), and the
 // general verdict forced on a jittered Miura (interior vertices moved by up to 0.01 of the
 // default panel size: not foldable, which `check` proves by the multiplier model's loop gain,
 // 0.34 s at 100 x 100; the general solver's evidence search is what is timed here). Their
@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "data/generators/miura.hpp"
+#include "data/generators/resch_triangle.hpp"
 #include "data/generators/waterbomb_tessellation.hpp"
 #include "kernel/analysis/foldability_report.hpp"
 #include "kernel/analysis/general_verdict.hpp"
@@ -136,7 +137,29 @@ void BM_GeneralVerdictWaterbombTessellation(benchmark::State& state) {
   state.SetLabel(std::string(to_string(v.verdict)) + (v.trace_method.empty() ? "" : ", " + v.trace_method));
 }
 
+// `check` (letters kept) on a Resch triangle tessellation of n x n grid rows and edges: a
+// general-solver pattern with a high-DOF flat state (DOF ~ creases / 7), certified strictly
+// foldable by the fold-size trace. Counters: creases, the verdict class, strict, DOF.
+void BM_CheckReschTriangle(benchmark::State& state) {
+  generators::ReschTriangleParams params;
+  params.rows = params.cols = static_cast<int>(state.range(0));
+  const CreasePattern p = generators::resch_triangle(params);
+  const Topology t = build_topology(p);
+  FoldabilityReport r;
+  for (auto _ : state) r = check_foldability(p, t);
+  state.counters["creases"] = static_cast<double>(std::count_if(p.assignments.begin(), p.assignments.end(), [](Assignment a) {
+    return a == Assignment::Mountain || a == Assignment::Valley;
+  }));
+  state.counters["verdict_class"] = static_cast<int>(r.verdict);
+  state.counters["strict"] = r.strictness && r.strictness->strict;
+  state.counters["dof"] = r.dof;
+  state.SetLabel(to_string(r.verdict));
+}
+
 void register_general_cases() {
+  for (int n : {10, 16, 24, 32})
+    benchmark::RegisterBenchmark("BM_CheckReschTriangle", BM_CheckReschTriangle)
+        ->Arg(n)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
   for (const std::filesystem::path& file : corpus_files())
     benchmark::RegisterBenchmark(
         ("BM_CheckCorpusFile/" + file.parent_path().filename().string() + "/" + file.stem().string()).c_str(),

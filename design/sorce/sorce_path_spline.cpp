@@ -274,4 +274,18 @@ PathSpline path_spline(const MotionBranch& branch, int num_edges, PathParameter 
   return path;
 }
 
+std::string parameter_definition(const PathSpline& path) {
+  const std::string made = !path.exact ? "quintic spline per crease"
+                           : path.parameter == PathParameter::kDrive
+                               ? "the multiplier model's exact fold angles"
+                               : "the multiplier model's exact fold angles of the drive, splined in t";
+  switch (path.parameter) {
+    case PathParameter::kArcLength: return "t = arc length in fold-angle space / total, " + made;
+    case PathParameter::kHalfTangent:
+      return "tan(pi t/2) ~ geometric mean of |tan(rho/2)| over folding creases (seed eq 35 on one vertex), " + made;
+    case PathParameter::kDrive: break;
+  }
+  return "t = drive / final drive, " + made;
+}
+
 }  // namespace rigidfold::sorce

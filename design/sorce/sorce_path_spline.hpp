@@ -15,6 +15,7 @@
 //
 // Units: t dimensionless, angles radians (rho > 0 valley, docs/DESIGN.md).
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "design/sorce/sorce_function.hpp"
@@ -77,5 +78,9 @@ struct PathSpline {
 // Cost of kArcLength: one Gauss quadrature of the speed per knot interval and a Newton solve
 // per sample at construction (O(steps * edges)), then two spline evaluations per rho_e(t).
 PathSpline path_spline(const MotionBranch& branch, int num_edges, PathParameter parameter = PathParameter::kDrive);
+
+// What t is and how rho_e(t) is made, for people (e.g. "t = drive / final drive, quintic spline
+// per crease").
+std::string parameter_definition(const PathSpline& path);
 
 }  // namespace rigidfold::sorce

@@ -371,7 +371,10 @@ void general_report(const CreasePattern& p, const Topology& t, const Foldability
     r.obstruction = ob;
   }
   BranchExploration x;
-  if (o.explore_branches) {
+  if (o.explore_branches && r.foldable() && r.dof > o.max_explored_dof) {
+    x.why_not = "not run: the certified motion has DOF " + std::to_string(r.dof) + " at the flat state (more than " +
+                std::to_string(o.max_explored_dof) + "), of which the explorer's departures would be an arbitrary sample";
+  } else if (o.explore_branches) {
     BranchExplorerOptions xo;
     xo.tolerances = o.tolerances;
     xo.progress = o.progress;

@@ -83,6 +83,11 @@ struct FoldabilityOptions {
   bool use_assignment = true;   // false: every crease may fold either way (letters ignored)
   bool force_general = false;   // skip multiplier propagation (cross-checks)
   bool explore_branches = true; // run the branch explorer where it applies (general model)
+  // Not run either when the verdict is already a certified motion whose DOF at the flat state is
+  // above this: its max_branches departures would be an arbitrary sample of a cone of that
+  // dimension, and its dense second-order work grows with it (a Resch triangle tessellation of
+  // 376 creases, DOF 52: 30 of its 31 s in the explorer, for no change to the verdict).
+  int max_explored_dof = 16;
   Tolerances tolerances = kDefaultTolerances;
   int family_samples = 64;      // multiplier model: points sampled along each family component
   // How far each coordinate may lie from the true one (the file's length unit; 0: exact data);

@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -311,6 +312,10 @@ std::string NetworkCreasePattern::crease_letters() const {
   for (int e = 0; e < pattern.num_edges(); ++e)
     if (edge_joint[e] >= 0) letters += assignment_letter(pattern.assignments[e]);
   return letters;
+}
+
+int NetworkCreasePattern::num_creases() const {
+  return static_cast<int>(std::count_if(edge_joint.begin(), edge_joint.end(), [](int j) { return j >= 0; }));
 }
 
 }  // namespace rigidfold

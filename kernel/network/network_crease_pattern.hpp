@@ -55,6 +55,8 @@ struct NetworkCreasePattern {
   double central_angle_sum = 0.0;       // (2-32), radians
   // The M/V letter of each crease (edges with a joint), in edge order: "MVVM...".
   std::string crease_letters() const;
+  // The creases (edges with a joint).
+  int num_creases() const;
 };
 
 NetworkCreasePattern network_crease_pattern(const LinkageNetwork& network, const Eigen::VectorXd& q,

@@ -149,6 +149,10 @@ TEST(CheckedNumbersCli, NonFiniteAndOutOfRangeFlagsExitTwoNamingTheFlag) {
       {"generate miura --a nan --out " + (dir / "m.fold").string(), "--a"},
       {"generate miura --alpha-deg inf --out " + (dir / "m.fold").string(), "--alpha-deg"},
       {"generate square-twist --side -nan --out " + (dir / "s.fold").string(), "--side"},
+      {"generate resch-triangle --side inf --out " + (dir / "r.fold").string(), "--side"},
+      {"generate resch-triangle --rows 0 --out " + (dir / "r.fold").string(), "--rows"},
+      {"generate resch-triangle --cols 401 --out " + (dir / "r.fold").string(), "--cols"},
+      {"generate resch-triangle --n 3 --out " + (dir / "r.fold").string(), "--n"},
       {"trace " + square + " --to nan", "--to"},
   };
   for (const auto& c : cases) {

@@ -519,6 +519,24 @@ TEST(OpxReader, OverlappingLinesLaterLineWins) {
   EXPECT_EQ(s.arrangement.merged_lines[1].kept_letter, Assignment::Mountain);
 }
 
+// A real file that draws creases twice with two letters: Rabbit Ear's Fibonacci pleat (ORIPA on
+// Java 1.5). It opens, each overlap warned with both lines named; strict_lines refuses it.
+TEST(OpxReader, FibonacciPleatOpensWithTheOverlappingLinesNamed) {
+  OpxImportSummary s;
+  const CreasePattern p = read_opx(oripa("Fibonacci.opx"), {}, &s);
+  const std::vector<std::string> both = warnings_with(p, "as mountain and valley: kept valley");
+  ASSERT_EQ(both.size(), 3u);
+  EXPECT_NE(both[0].find("lines[0] (line 7) and lines[57] (line 1081) draw the same crease"), std::string::npos) << both[0];
+  EXPECT_EQ(s.arrangement.overwritten_edges, 3);
+  const auto later = std::count_if(s.arrangement.merged_lines.begin(), s.arrangement.merged_lines.end(),
+                                   [](const MergedLines& m) { return m.rule == MergedLines::Rule::Later; });
+  EXPECT_EQ(later, 3);  // `import --json` lists each under merged_lines
+  EXPECT_GT(p.num_faces(), 0);
+  SvgReadOptions strict;
+  strict.strict_lines = true;
+  EXPECT_THROW(read_opx(oripa("Fibonacci.opx"), strict), InputError);
+}
+
 TEST(OpxReader, OverlappingLinesACreaseDoesNotReplaceTheOutline) {
   // A mountain drawn later over the bottom edge (lines[0]): the edge stays a cut line (B).
   OpxImportSummary s;

@@ -71,11 +71,11 @@ TEST(SorceClearance, VertexACutSlabsNoLongerMeetTheirMatesCams) {
   for (int f = 0; f < p.num_faces(); ++f) {
     SCOPED_TRACE("face " + std::to_string(f));
     const PanelSolid& ps = printed.panels[f];
-    const auto tris = testing::parse_stl(polygons_stl(ps.polygons, 0, "rigidfold test: clearance"));
-    EXPECT_EQ(testing::open_or_misoriented_edges(tris), 0);
+    const auto tris = ::rigidfold::testing::parse_stl(polygons_stl(ps.polygons, 0, "rigidfold test: clearance"));
+    EXPECT_EQ(::rigidfold::testing::open_or_misoriented_edges(tris), 0);
     double volume = 0.0;
     for (double v : ps.shell_volumes) volume += v;
-    EXPECT_NEAR(testing::enclosed_volume(tris), volume, 1e-5 * volume);
+    EXPECT_NEAR(::rigidfold::testing::enclosed_volume(tris), volume, 1e-5 * volume);
     // The cams are the same shells before and after (only slabs are cut).
     EXPECT_EQ(ps.cam_sections, plain.panels[f].cam_sections);
   }
