@@ -83,8 +83,11 @@ TEST(SorceDesignPath, VertexAOnTheGeneralSolversPathIsRefinedAndSaysWhetherItSet
   const SorceDesign d = vertex_a_design(40, true);
   EXPECT_FALSE(d.refinement.exact);
   EXPECT_FALSE(d.sorce.path.exact);
-  EXPECT_EQ(d.refinement.steps_tried, (std::vector<int>{40, 80, 160}));
-  EXPECT_EQ(d.sorce.path.knots.size(), 161u);
+  const std::vector<int>& tried = d.refinement.steps_tried;
+  ASSERT_GE(tried.size(), 2u);
+  ASSERT_LE(tried.size(), 3u);  // at most two doublings; settled at 80 steps it stops there
+  for (std::size_t k = 0; k < tried.size(); ++k) EXPECT_EQ(tried[k], 40 << k);
+  EXPECT_EQ(d.sorce.path.knots.size(), static_cast<std::size_t>(tried.back() + 1));  // the finest path is used
   EXPECT_EQ(d.refinement.settled, d.refinement.change.empty()) << d.refinement.change;
   for (const CreaseJoint& c : d.sorce.creases) EXPECT_TRUE(c.report.cusps.empty()) << "crease " << c.edge;
 }
