@@ -164,8 +164,6 @@ SorceDesign sorce_design(const CreasePattern& pattern, const SorceDesignRequest&
   out.refinement = std::move(settled.refinement);
   out.sorce = std::move(settled.joints);
   if (!request.optimize) return out;
-  PatternSorceRequest first = request.sorce;
-  first.branch = out.branch;
 
   const int nf = pattern.num_faces();
   std::vector<bool> borders(nf, false);
@@ -216,8 +214,8 @@ SorceDesign sorce_design(const CreasePattern& pattern, const SorceDesignRequest&
   out.optimization = optimize_offsets(problem, start, request.optimizer);
 
   // The joints rebuilt with the design found (the search's best, feasible or not: the report
-  // says which), on the same path and end offsets.
-  PatternSorceRequest second = first;
+  // says which), with the same end offsets, on the path settled for them.
+  PatternSorceRequest second = request.sorce;
   second.end_offsets.clear();
   for (const FaceOffset& f : base.faces) second.end_offsets.push_back(f.end_value);
   second.offset_coefficients.assign(nf, {});
@@ -226,7 +224,6 @@ SorceDesign sorce_design(const CreasePattern& pattern, const SorceDesignRequest&
                                          out.optimization->b.begin() + (slot[f] + 1) * per_face);
   // The search ran on the path settled for the first design; the design found settles again
   // (its offsets can make the diagnostics ask for a finer path).
-  second.branch.reset();
   settled = settle(pattern, second, ladder, request.sorce.trace.steps, accuracy);
   out.branch = std::move(settled.path.branch);
   out.refinement = std::move(settled.refinement);
