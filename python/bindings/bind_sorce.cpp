@@ -32,12 +32,9 @@ py::list spans(const std::vector<Span>& s) {
   return out;
 }
 
-// One fold: its report and its profiles sampled at `samples` evenly spaced t in [0, 1] (the
+// One fold: its report `r` and its profiles sampled at `samples` evenly spaced t in [0, 1] (the
 // end points from their analytic limits, eqs 29-31; an interior t where gamma' = 0 is skipped).
-py::dict fold_dict(const FoldMotion& motion, int samples) {
-  ReportOptions options;
-  options.samples = samples;
-  const FoldReport r = fold_report(motion, options);
+py::dict fold_dict(const FoldMotion& motion, const FoldReport& r, int samples) {
   const SampledProfiles sampled = sample_profiles(motion, samples);
   const std::vector<double>& ts = sampled.t;
   Eigen::MatrixXd sl(static_cast<Eigen::Index>(ts.size()), 2), sr(static_cast<Eigen::Index>(ts.size()), 2);
@@ -76,11 +73,11 @@ py::dict vertex_dict(const SorceVertex& v, int samples) {
   if (samples < 3) throw InputError("samples", "must be at least 3");
   py::list folds;
   std::vector<FoldReport> reports;
+  ReportOptions options;
+  options.samples = samples;
   for (const FoldMotion& f : v.folds) {
-    folds.append(fold_dict(f, samples));
-    ReportOptions options;
-    options.samples = samples;
     reports.push_back(fold_report(f, options));
+    folds.append(fold_dict(f, reports.back(), samples));
   }
   py::dict d;
   d["sectors"] = std::vector<double>(v.sectors.begin(), v.sectors.end());
