@@ -72,8 +72,8 @@ struct FlatFoldableWitness {
 
 // gain_modes (optional, one mode per interior vertex in topology order, e.g. the only modes
 // the letters allow): the least move also closes every cycle of the multiplier model in
-// those modes (loop gain 1, rows solved with the Kawasaki rows; their Jacobian by central
-// differences). Then a pattern already flat-foldable as read is moved too. nullopt when the
+// those modes (loop gain 1, rows solved with the Kawasaki rows; flat_fold_constraints.hpp,
+// exact Jacobian). Then a pattern already flat-foldable as read is moved too. nullopt when the
 // modes leave a tie with a zero multiplier, a cycle with a negative gain, or no cycle.
 // stated_tolerance: the user's bound on each coordinate (input_precision), used instead of
 // the reader's boxes and the digits; 0 (exact data): no witness.
