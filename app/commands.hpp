@@ -29,5 +29,6 @@ void add_thick_command(CLI::App& app);  // rigidfold thick PATTERN --thickness T
 void add_sorce_command(CLI::App& app);  // rigidfold sorce PATTERN --thickness T [--offsets linear|SPEC.json] [--optimize] [--json] [--out DIR]
 void add_network_command(CLI::App& app);  // rigidfold network NETWORK.json [--json] [--trace N]
 void add_metamaterial_command(CLI::App& app);  // rigidfold metamaterial --unit square-twist|element1|element2|element3 [...] [--json] [--plot DIR]
+void add_repair_command(CLI::App& app);  // rigidfold repair PATTERN --out R.fold [--keep-boundary] [--fix V,...] [--max-move D] [--json]
 
 }  // namespace rigidfold::cli

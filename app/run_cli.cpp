@@ -13,23 +13,13 @@ int run_cli(int argc, const char* const* argv) {
   CLI::App app{"rigidfold: exact kinematics of rigid origami"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text());
-  add_info_command(app);
-  add_fold_command(app);
-  add_check_command(app);
-  add_vertex_command(app);
-  add_generate_command(app);
-  add_report_command(app);
-  add_trace_command(app);
-  add_string_command(app);
-  add_import_command(app);
-  add_export_command(app);
-  add_assignments_command(app);
-  add_energy_command(app);
-  add_waterbomb_command(app);
-  add_thick_command(app);
-  add_sorce_command(app);
-  add_network_command(app);
-  add_metamaterial_command(app);
+  // In the order `rigidfold --help` lists them.
+  for (void (*add)(CLI::App&) : {&add_info_command, &add_fold_command, &add_check_command, &add_vertex_command,
+                                 &add_generate_command, &add_report_command, &add_trace_command, &add_string_command,
+                                 &add_import_command, &add_export_command, &add_assignments_command, &add_energy_command,
+                                 &add_waterbomb_command, &add_thick_command, &add_sorce_command, &add_network_command,
+                                 &add_metamaterial_command, &add_repair_command})
+    add(app);
   // No floating-point flag of any command takes NaN or +-inf (app/number_flags.hpp).
   require_finite_numbers(app);
   record_invocation(app, argc, argv);

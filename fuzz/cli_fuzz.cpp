@@ -1,9 +1,9 @@
 // libFuzzer targets that drive whole `rigidfold` commands in-process through run_cli (the
 // same exit-status mapping as the executable), one target per user-input entry:
-//   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold
+//   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold, then --target INPUT
 //   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
 //   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|metamaterial|check|thick|sorce + flags
+//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|metamaterial|check|thick|sorce|repair + flags
 //   RIGIDFOLD_FUZZ_ENTRY 5  sorce_spec_fuzz     sorce VERTEX_A.fold --thickness 0.1 --offsets INPUT --out DIR
 //   RIGIDFOLD_FUZZ_ENTRY 6  network_json_fuzz   network INPUT --json --trace 4
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
@@ -75,14 +75,15 @@ void write_input(const std::uint8_t* data, std::size_t size) {
 // waterbomb --sweep-*: up to 400 analyses, and --plot: a Python process per run; metamaterial
 // --cross-check: a traced tessellation of up to 2000 steps; energy --barriers: a string
 // method per pair of stable states, 1.7 s in Release on the bundled base; metamaterial
-// --stacked-steps: up to 200 traced steps per layer) are dropped too, and waterbomb
+// --stacked-steps: up to 200 traced steps per layer; repair --max-added: 2 searches ~600 pairs of
+// added creases, each a check) are dropped too, and waterbomb
 // --n is held at most 24 (n = 180 checks each state on a 360-crease vertex: ~6 s in Release,
 // far more under ASan), 4 for a split-fold base (see below): a legal run of minutes would
 // count as a libFuzzer timeout (-timeout=30).
 std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"rigidfold"};
   if (size == 0) return args;
-  switch (data[0] % 11) {  // every case reachable (with % 10, check was not: sorce took 9)
+  switch (data[0] % 13) {  // every case reachable (with % 10, check was not: sorce took 9)
     case 0: args.insert(args.end(), {"generate"}); break;
     case 1: args.insert(args.end(), {"trace", kPattern}); break;
     case 2: args.insert(args.end(), {"trace", kPattern, "--general"}); break;
@@ -93,6 +94,8 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
     case 7: args.insert(args.end(), {"metamaterial"}); break;
     case 8: args.insert(args.end(), {"thick", kMiura}); break;
     case 9: args.insert(args.end(), {"sorce", kVertexA}); break;
+    case 11: args.insert(args.end(), {"repair", kPattern}); break;
+    case 12: args.insert(args.end(), {"repair", kPattern, "--add-creases", "--max-added", "1"}); break;
     default: args.insert(args.end(), {"check", kPattern}); break;  // 10
   }
   std::string token;
@@ -101,6 +104,7 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
                         token.rfind("--optimize", 0) == 0 || token.rfind("--steps", 0) == 0 ||
                         token.rfind("--sweep", 0) == 0 || token.rfind("--cross-check", 0) == 0 ||
                         token.rfind("--barriers", 0) == 0 || token.rfind("--stacked-steps", 0) == 0 ||
+                        token.rfind("--max-added", 0) == 0 ||
                         (args.size() > 1 && args[1] == "waterbomb" && token.rfind("--plot", 0) == 0);
     if (!token.empty() && !costly && token.find('/') == std::string::npos && token.find('\0') == std::string::npos &&
         args.size() < 24)
@@ -144,6 +148,20 @@ std::vector<std::string> flag_args(const std::uint8_t* data, std::size_t size) {
   return args;
 }
 
+// Runs one command line; 0 done, 2 bad input, 3 no answer passed the command's own check
+// (app/main.cpp); 1 or anything else is an internal error, and aborts.
+void run(const std::vector<std::string>& args) {
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  const int status = rigidfold::cli::run_cli(static_cast<int>(argv.size()), argv.data());
+  if (status != 0 && status != 2 && status != 3) {
+    std::fprintf(stderr, "run_cli returned %d (internal error) for:", status);
+    for (const auto& a : args) std::fprintf(stderr, " '%s'", a.c_str());
+    std::fprintf(stderr, "\n");
+    std::abort();
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -175,16 +193,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       args = flag_args(data, size);
       break;
   }
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  const int status = rigidfold::cli::run_cli(static_cast<int>(argv.size()), argv.data());
-  // 0 done, 2 bad input, 3 no answer passed the command's own check (app/main.cpp); 1 or
-  // anything else is an internal error.
-  if (status != 0 && status != 2 && status != 3) {
-    std::fprintf(stderr, "run_cli returned %d (internal error) for:", status);
-    for (const auto& a : args) std::fprintf(stderr, " '%s'", a.c_str());
-    std::fprintf(stderr, "\n");
-    std::abort();
-  }
+  run(args);
+  // The same file as the target of `fold --target` (the same reader, then the nearest closed state).
+  if (RIGIDFOLD_FUZZ_ENTRY == 1) run({"rigidfold", "fold", kPattern, "--target", input, "--out", out});
   return 0;
 }

@@ -1,10 +1,12 @@
 #include "kernel/geometry/fold_angles_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "kernel/geometry/fold_angles.hpp"
 #include "kernel/math/angle_units.hpp"
+#include "kernel/pattern/fold_io.hpp"
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/json_input.hpp"
 
@@ -60,5 +62,19 @@ Eigen::VectorXd read_fold_angles_json(const std::string& path, const CreasePatte
   return rho;
 }
 
+Eigen::VectorXd read_fold_angles_input(const std::string& path, const CreasePattern& p, const Topology& t) {
+  if (!path.ends_with(".fold")) return read_fold_angles_json(path, p, t);
+  const CreasePattern other = read_fold(path);
+  if (other.num_edges() != p.num_edges())
+    throw InputError(path, "has " + std::to_string(other.num_edges()) + " edges but the pattern has " + std::to_string(p.num_edges()));
+  Eigen::VectorXd rho = stored_fold_angles(p);
+  for (int e = 0; e < p.num_edges(); ++e) {
+    const std::string where = path + ": edges_vertices[" + std::to_string(e) + "]";
+    if (std::minmax(other.edges[e][0], other.edges[e][1]) != std::minmax(p.edges[e][0], p.edges[e][1]))
+      throw InputError(where, "joins other vertices than the pattern's edge " + std::to_string(e) + " (the files are not the same pattern)");
+    if (other.fold_angles[e]) set_angle(rho, p, t, e, *other.fold_angles[e], path + ": edges_foldAngle[" + std::to_string(e) + "]");
+  }
+  return rho;
+}
 
 }  // namespace rigidfold

@@ -16,4 +16,9 @@ namespace rigidfold {
 
 Eigen::VectorXd read_fold_angles_json(const std::string& path, const CreasePattern& pattern, const Topology& topology);
 
+// The same from either a JSON file as above or, for a path ending in .fold, a FOLD file of the
+// same pattern (the same edges_vertices, edge by edge; e.g. Origami Simulator's export) whose
+// edges_foldAngle gives the angles (null: the pattern's own). The same checks per angle.
+Eigen::VectorXd read_fold_angles_input(const std::string& path, const CreasePattern& pattern, const Topology& topology);
+
 }  // namespace rigidfold

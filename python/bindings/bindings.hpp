@@ -22,6 +22,7 @@ void bind_thick(py::module_& m);     // thick-panel vertices (seed 003 ch. 4)
 void bind_sorce(py::module_& m);     // SORCE rolling joints (seed 002)
 void bind_metamaterial(py::module_& m);  // square-twist metamaterial unit (seed 003 3.3.2)
 void bind_formats(py::module_& m);   // SVG and DXF text of a crease pattern
+void bind_repair(py::module_& m);    // repair, add_creases, nearest_closed_state (design for any pattern)
 
 // A progress sink (kernel/analysis/progress.hpp) that runs Python's signal handlers at each unit
 // of the kernel's work, the GIL held only for that: Ctrl-C during a long check or trace raises

@@ -79,4 +79,5 @@ PYBIND11_MODULE(_core, m) {
   bind_sorce(m);
   bind_metamaterial(m);
   bind_formats(m);
+  bind_repair(m);
 }

@@ -10,6 +10,8 @@ Patterns:   load (.fold, .svg, .opx), parse_fold, save, svg_text, dxf_text, Crea
             .fold_angles), bundled_examples, miura_ori, miura_fold_angles, square_twist,
             waterbomb_base, corrugated_unit
 Analysis:   check, trace, enumerate_assignments
+Any pattern: repair (least vertex move to rigid foldability), add_creases (fewest added face
+            diagonals), nearest_closed_state (closed state nearest to target angles)
 Vertex:     flat_fold_angles, flat_fold_multipliers, miura_vertex
 Closure:    ClosureSystem, closure_jacobian
 Energy:     stable_states (crease springs on any pattern, no symmetry imposed)
@@ -27,6 +29,7 @@ Figures:    rigidfold.plot (matplotlib)
 from rigidfold._core import (
     __commit__,
     __version__,
+    add_creases,
     bundled_examples,
     check,
     ClosureSystem,
@@ -42,8 +45,10 @@ from rigidfold._core import (
     miura_fold_angles,
     miura_ori,
     miura_vertex,
+    nearest_closed_state,
     NoAnswerError,
     parse_fold,
+    repair,
     save,
     sorce_circular_vertex,
     sorce_vertex,
