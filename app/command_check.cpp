@@ -12,7 +12,9 @@
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
 #include "report/foldability_json.hpp"
+#include "report/foldability_text.hpp"
 #include "report/repair_json.hpp"
+#include "report/repair_text.hpp"
 #include "design/repair/tolerance_study.hpp"
 #include "app/number_flags.hpp"
 #include "kernel/analysis/foldability_report.hpp"
@@ -24,49 +26,6 @@
 
 namespace rigidfold::cli {
 namespace {
-
-void print_text(const std::string& file, const FoldabilityReport& r) {
-  std::cout << file << ": " << to_string(r.verdict) << " (model: " << r.model_name << ")\n";
-  std::cout << "  " << r.reason << "\n";
-  std::cout << "  precision: " << r.coordinate_precision << "\n";
-  if (r.foldable() || r.folds_in_part) {
-    std::cout << "  " << (r.folds_in_part ? "the motion found: " : "") << "DOF " << r.dof << ", max closure residual along the branch " << r.max_residual << " rad";
-    if (r.certificate_mismatch) std::cout << ", certificate mismatch " << *r.certificate_mismatch;
-    std::cout << "\n";
-    if (r.strictness) std::cout << "  strict: " << strict_verdict(*r.strictness) << "\n";
-  }
-  if (r.obstruction) std::cout << "  obstruction: " << r.obstruction->message << "\n";
-  if (r.model == FoldabilityModel::kGivenStateHoleClosure)
-    for (const TracedBranch& b : r.branches)
-      std::cout << "  branch " << b.id << " from the given state: crease " << b.driving_edge << " "
-                << to_degrees(b.driving_begin) << " -> " << to_degrees(b.driving_end) << " deg, stopped by "
-                << b.stop_text() << "\n";
-  if (r.branches_explored) {
-    int keep = 0;
-    for (const TracedBranch& b : r.branches) keep += r.assignment_used && b.signs_match_assignment;
-    std::cout << "  branches: " << r.branches.size() << " traced through " << r.points.size() << " points; " << keep
-              << " keep every letter from their start"
-              << (r.exploration_budget_exhausted ? " (the explorer's work budget ran out: departures left untraced)" : "") << "\n";
-    for (const BranchPoint& p : r.points)
-      if (p.kind == PointKind::kBifurcation)
-        std::cout << "  bifurcation where crease " << p.parameter_edge << " is at " << to_degrees(p.parameter)
-                  << " deg (within " << p.location_error_bound << " rad), " << p.tangent_lines << " tangent lines\n";
-  }
-}
-
-void print_study_text(const std::string& file, const ToleranceStudy& s) {
-  std::cout << file << ": " << s.message << "\n";
-  for (const auto& [verdict, count] : s.verdicts) std::cout << "  " << count << " x " << verdict << "\n";
-  if (!s.degree4_model) return;
-  for (const LoopSensitivity& l : s.loops) {
-    std::cout << "  loop";
-    for (std::size_t i = 0; i < l.vertices.size(); ++i) std::cout << (i ? "-" : " ") << l.vertices[i];
-    std::cout << ": mean |log loop gain| " << l.mean_log_gain << "\n";
-  }
-  if (s.repairs > 0)
-    std::cout << "  least repair move (RMS over the vertices) / sigma: median " << s.repair_move_median << ", max " << s.repair_move_max
-              << " over " << s.repairs << " repaired samples\n";
-}
 
 struct StudyFlags {
   std::optional<double> sigma;
@@ -104,7 +63,7 @@ void run_tolerance_study(const std::string& file, const CreasePattern& p, const 
     j["tolerance_study"] = report::tolerance_study_json(s, options);
     std::cout << document_text(j) << "\n";
   } else {
-    print_study_text(file, s);
+    std::cout << report::tolerance_study_text(file, s);
   }
 }
 
@@ -160,7 +119,7 @@ void add_check_command(CLI::App& app) {
       std::cout << document_text(j) << "\n";
       return;
     }
-    print_text(a->pattern, r);
+    std::cout << report::foldability_text(a->pattern, r);
   });
 }
 

@@ -24,6 +24,7 @@
 #include "kernel/pattern/no_answer_error.hpp"
 #include "design/target/nearest_state.hpp"
 #include "report/nearest_state_json.hpp"
+#include "report/repair_text.hpp"
 #include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/topology.hpp"
 
@@ -46,12 +47,6 @@ Eigen::VectorXd angles_to_place(const FoldArgs& a, const CreasePattern& p, const
   return nearest->angles;
 }
 
-void print_nearest_text(const std::string& target, const NearestState& n) {
-  std::cout << "  nearest closed state to " << target << ": " << n.message << "; RMS " << to_degrees(n.rms_distance) << " deg over "
-            << n.free_creases << " free creases, the target's own closure residual " << n.target_residual << " rad, " << n.iterations
-            << " iterations, stationarity " << n.stationarity
-            << (n.against_letters.empty() ? "" : "; " + std::to_string(n.against_letters.size()) + " creases against their letters") << "\n";
-}
 
 }  // namespace
 
@@ -103,7 +98,7 @@ void add_fold_command(CLI::App& app) {
                 << g.non_tree_hinges << " non-tree hinges";
       if (g.worst_edge >= 0) std::cout << ", worst at edge " << g.worst_edge;
       std::cout << "\n";
-      if (nearest) print_nearest_text(a->target, *nearest);
+      if (nearest) std::cout << report::nearest_state_text(a->target, *nearest);
     }
   });
 }

@@ -5,7 +5,6 @@
 // (design/repair/crease_addition.hpp). Exit 0 with REPAIRED.fold written when the repaired
 // (or unchanged) pattern's check says foldable; otherwise the report is printed, no file is
 // written, and the exit status is 3.
-#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -24,48 +23,12 @@
 #include "kernel/pattern/output_set.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 #include "report/repair_json.hpp"
+#include "report/repair_text.hpp"
 
 namespace rigidfold::cli {
 namespace {
 
-void print_repair_text(const std::string& file, const RepairSummary& s) {
-  std::cout << file << ": " << to_string(s.termination) << "\n  " << s.message << "\n";
-  std::cout << "  before: " << to_string(s.before.verdict) << " (model: " << s.before.model_name << "): " << s.before.reason << "\n";
-  if (s.termination == RepairTermination::kAlreadyFoldable || s.kawasaki_rows == 0) return;
-  std::cout << "  constraints: " << s.kawasaki_rows << " Kawasaki, " << s.gain_rows << " loop gain, over " << s.free_coordinates
-            << " free coordinates (" << s.fixed_vertex_count << " vertices fixed); modes from the letters at "
-            << s.kawasaki_rows - s.modes_chosen_without_letters << " vertices, chosen at " << s.modes_chosen_without_letters << "\n";
-  std::cout << "  violation: Kawasaki " << s.kawasaki_before << " -> " << s.kawasaki_after << " rad, |log loop gain| "
-            << s.gain_before << " -> " << s.gain_after << "; " << s.iterations << " iterations, stationarity " << s.stationarity << "\n";
-  std::cout << "  move: largest " << s.max_move << " (vertex " << s.worst_vertex << "), RMS " << s.rms_move << ", pattern size "
-            << s.pattern_size << "\n";
-  for (const RepairConstraint& c : s.costliest) {
-    std::cout << "  costs the move: " << c.kind << (c.kind == "kawasaki" ? " at vertex " : " around vertices ");
-    for (std::size_t i = 0; i < c.vertices.size(); ++i) std::cout << (i ? "-" : "") << c.vertices[i];
-    std::cout << " (was " << c.before << ", lambda " << c.lambda << ")\n";
-  }
-  if (s.after) {
-    std::cout << "  after: " << to_string(s.after->verdict) << " (model: " << s.after->model_name << "), DOF " << s.after->dof;
-    if (s.after->certificate_mismatch) std::cout << ", certificate mismatch " << *s.after->certificate_mismatch;
-    std::cout << "\n";
-  }
-}
 
-void print_addition_text(const std::string& file, const CreaseAdditionSummary& s) {
-  std::cout << file << ": " << s.message << "\n";
-  std::cout << "  before: " << to_string(s.before.verdict) << " (model: " << s.before.model_name << "): " << s.before.reason << "\n";
-  if (s.already_foldable) return;
-  std::cout << "  candidates: " << s.candidates << " face diagonals, each M and V; " << s.checks << " patterns checked\n";
-  for (std::size_t k = 0; k < s.found.size(); ++k) {
-    const CreaseAddition& a = s.found[k];
-    std::cout << "  " << k + 1 << ".";
-    for (const AddedCrease& c : a.creases)
-      std::cout << " " << assignment_letter(c.letter) << " crease " << c.v0 << "-" << c.v1 << " across face " << c.face << ";";
-    std::cout << " " << to_string(a.check.verdict) << ", DOF " << a.check.dof;
-    if (a.check.certificate_mismatch) std::cout << ", certificate mismatch " << *a.check.certificate_mismatch;
-    std::cout << (k == 0 ? " (written)" : "") << "\n";
-  }
-}
 
 struct RepairArgs {
   std::string pattern, out;
@@ -79,7 +42,7 @@ struct RepairArgs {
 struct RepairOutcome {
   std::optional<CreasePattern> result;
   nlohmann::ordered_json json;
-  std::function<void()> print_text;
+  std::string text;
   std::string failure;  // the stderr line when there is no result
 };
 
@@ -89,32 +52,32 @@ RepairOutcome move_vertices(const RepairArgs& a, const CreasePattern& p, const T
   options.fixed_vertices = a.fix;
   options.max_move = a.max_move;
   if (std::string why; !options.IsValid(p.num_vertices(), &why)) throw InputError(a.max_move && why.starts_with("max") ? "--max-move" : "--fix", why);
-  auto s = std::make_shared<RepairSummary>([&] {
+  const RepairSummary s = [&] {
     TerminalProgress progress("repair");
     options.check.progress = progress.sink();
     return repair_pattern(p, t, options);
-  }());
+  }();
   RepairOutcome out;
-  if (succeeded(s->termination)) out.result = s->repaired;
-  out.json = report::repair_json(*s);
-  out.print_text = [s, file = a.pattern] { print_repair_text(file, *s); };
-  out.failure = "repair: " + std::string(to_string(s->termination));
+  if (succeeded(s.termination)) out.result = s.repaired;
+  out.json = report::repair_json(s);
+  out.text = report::repair_text(a.pattern, s);
+  out.failure = "repair: " + std::string(to_string(s.termination));
   return out;
 }
 
 RepairOutcome add_diagonals(const RepairArgs& a, const CreasePattern& p, const Topology& t) {
   CreaseAdditionOptions options;
   options.max_added = a.max_added;
-  auto s = std::make_shared<CreaseAdditionSummary>([&] {
+  const CreaseAdditionSummary s = [&] {
     TerminalProgress progress("repair");
     options.check.progress = progress.sink();
     return add_creases(p, t, options);
-  }());
+  }();
   RepairOutcome out;
-  if (s->already_foldable) out.result = p;
-  if (!s->found.empty()) out.result = s->found[0].pattern;
-  out.json = report::crease_addition_json(*s);
-  out.print_text = [s, file = a.pattern] { print_addition_text(file, *s); };
+  if (s.already_foldable) out.result = p;
+  if (!s.found.empty()) out.result = s.found[0].pattern;
+  out.json = report::crease_addition_json(s);
+  out.text = report::crease_addition_text(a.pattern, s);
   out.failure = "repair --add-creases: undecided";
   return out;
 }
@@ -152,7 +115,7 @@ void add_repair_command(CLI::App& app) {
       j.update(r.json);
       std::cout << document_text(j) << "\n";
     } else {
-      r.print_text();
+      std::cout << r.text;
       if (r.result) std::cout << "  wrote " << a->out << "\n";
     }
     if (!r.result) throw NoAnswerError(r.failure + " (the report above says why); " + a->out + " not written");
