@@ -1,4 +1,4 @@
-// rigidfold repair PATTERN --out REPAIRED.fold [--keep-boundary] [--fix V,...] [--max-move D] [--json]
+// rigidfold repair PATTERN --out REPAIRED.fold [--keep-boundary] [--fix V,...] [--max-move D] [--letters keep|free] [--json]
 // rigidfold repair PATTERN --out REPAIRED.fold --add-creases [--max-added K] [--json]
 // The least vertex move that makes a flat pattern of degree-4 vertices rigidly foldable with
 // its letters (design/repair/pattern_repair.hpp), or the fewest face diagonals to add
@@ -34,6 +34,7 @@ struct RepairArgs {
   std::string pattern, out;
   bool keep_boundary = false, json = false, add_creases = false;
   int max_added = 2;
+  std::string letters = "keep";
   std::vector<int> fix;
   std::optional<double> max_move;
 };
@@ -51,6 +52,7 @@ RepairOutcome move_vertices(const RepairArgs& a, const CreasePattern& p, const T
   options.keep_boundary = a.keep_boundary;
   options.fixed_vertices = a.fix;
   options.max_move = a.max_move;
+  options.use_letters = a.letters == "keep";
   if (std::string why; !options.IsValid(p.num_vertices(), &why)) throw InputError(a.max_move && why.starts_with("max") ? "--max-move" : "--fix", why);
   const RepairSummary s = [&] {
     TerminalProgress progress("repair");
@@ -92,11 +94,14 @@ void add_repair_command(CLI::App& app) {
   cmd->add_flag("--keep-boundary", a->keep_boundary, "keep the vertices on the sheet's boundary where they are");
   cmd->add_option("--fix", a->fix, "vertices that stay where they are (comma-separated indices)")->delimiter(',');
   cmd->add_option("--max-move", a->max_move, "largest distance a vertex may move (the pattern's length unit)");
+  cmd->add_option("--letters", a->letters, "keep (default: the move keeps each vertex's mode and the repaired pattern folds with "
+                                           "its letters) or free (letters ignored)")
+      ->check(CLI::IsMember({"keep", "free"}));
   cmd->add_flag("--add-creases", a->add_creases, "add the fewest face diagonals (M or V) that make it fold, instead of moving vertices");
   cmd->add_option("--max-added", a->max_added, "with --add-creases: the most creases added together (1 or 2)")->check(CLI::Range(1, 2));
   cmd->add_flag("--json", a->json, "print one JSON object");
   cmd->callback([a, cmd] {
-    for (const char* flag : {"--keep-boundary", "--fix", "--max-move"})
+    for (const char* flag : {"--keep-boundary", "--fix", "--max-move", "--letters"})
       if (a->add_creases && cmd->count(flag) > 0) throw InputError(flag, "moves vertices; --add-creases adds creases and moves none");
     if (!a->add_creases && cmd->count("--max-added") > 0) throw InputError("--max-added", "needs --add-creases");
     OutputSet outputs;

@@ -13,6 +13,7 @@ nlohmann::ordered_json repair_json(const RepairSummary& s) {
   j["after"] = s.after ? foldability_json(*s.after) : nlohmann::ordered_json(nullptr);
   nlohmann::ordered_json modes = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < s.modes.size(); ++k) modes.push_back({s.interior_vertices[k], to_string(s.modes[k])});
+  j["letters"] = s.letters_used ? "keep" : "free";
   j["modes"] = {{"per_vertex", modes}, {"chosen_without_letters", s.modes_chosen_without_letters}};
   j["constraints"] = {{"kawasaki", s.kawasaki_rows},
                       {"loop_gain", s.gain_rows},

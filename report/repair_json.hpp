@@ -10,7 +10,7 @@
 namespace rigidfold::report {
 
 // Keys: termination, succeeded, message, before (foldability_json), after (foldability_json
-// or null), modes {per_vertex, chosen_without_letters}, constraints {kawasaki, loop_gain,
+// or null), letters ("keep" or "free"), modes {per_vertex, chosen_without_letters}, constraints {kawasaki, loop_gain,
 // free_coordinates, fixed_vertices}, violation {kawasaki_before, kawasaki_after,
 // loop_gain_before, loop_gain_after}, move {max, rms, worst_vertex, pattern_size,
 // max_relative, rms_relative, per_vertex [[vertex, distance], ...] for the vertices that

@@ -167,7 +167,7 @@ void require_repair_scope(const CreasePattern& pattern, const Topology& topology
 }
 
 std::vector<FlatFoldMode> repair_modes(const CreasePattern& pattern, const Topology& topology, int& chosen_without_letters,
-                                       std::string& refusal) {
+                                       std::string& refusal, bool use_letters) {
   std::vector<FlatFoldMode> modes;
   for (int v : topology.interior_vertices) {
     const Fan& fan = topology.stars[v].fans[0];
@@ -178,7 +178,7 @@ std::vector<FlatFoldMode> repair_modes(const CreasePattern& pattern, const Topol
     for (FlatFoldMode mode : {FlatFoldMode::kEqual13, FlatFoldMode::kEqual02}) {
       const std::array<double, 4> w = mode_multipliers(fan.sectors[0], fan.sectors[1], mode);
       smallest[mode_index(mode)] = std::min({std::abs(w[0]), std::abs(w[1]), std::abs(w[2]), std::abs(w[3])});
-      if (mode_sign_matching_letters(w, letters)) matching.push_back(mode);
+      if (!use_letters || mode_sign_matching_letters(w, letters)) matching.push_back(mode);
     }
     if (matching.empty()) {
       std::string text;
@@ -235,10 +235,11 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
   RepairSummary out;
   out.repaired = pattern;
   out.interior_vertices = topology.interior_vertices;
+  out.letters_used = options.use_letters;
   out.pattern_size = to_file_units(pattern, bounding_diagonal(pattern.vertices));
   out.vertex_move.assign(pattern.num_vertices(), 0.0);
   FoldabilityOptions check = options.check;
-  check.use_assignment = true;
+  check.use_assignment = options.use_letters;
   out.before = check_foldability(pattern, topology, check);
   auto finish = [&](RepairTermination t, std::string message) {
     out.termination = t;
@@ -247,11 +248,12 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
     return out;
   };
   if (out.before.verdict == FoldabilityClass::kFoldable)
-    return finish(RepairTermination::kAlreadyFoldable, "the pattern already folds with its letters; nothing moved");
+    return finish(RepairTermination::kAlreadyFoldable,
+                  std::string("the pattern already folds") + (options.use_letters ? " with its letters" : "") + "; nothing moved");
   if (topology.interior_vertices.empty())
     return finish(RepairTermination::kNotRepairable, "no interior vertex: moving vertices cannot change whether it folds");
   std::string refusal;
-  out.modes = repair_modes(pattern, topology, out.modes_chosen_without_letters, refusal);
+  out.modes = repair_modes(pattern, topology, out.modes_chosen_without_letters, refusal, options.use_letters);
   if (!refusal.empty()) return finish(RepairTermination::kNotRepairable, refusal);
   const FlatFoldConstraints constraints(pattern, topology, out.modes);
   if (!constraints.gains_usable()) return finish(RepairTermination::kNotRepairable, constraints.why_no_gains());
@@ -360,7 +362,8 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
                       out.after->reason);
   std::ostringstream msg;
   msg << "moved " << std::count_if(out.vertex_move.begin(), out.vertex_move.end(), [](double d) { return d > 0; })
-      << " vertices (largest " << out.max_move << ", RMS " << out.rms_move << "); the repaired pattern folds with its letters"
+      << " vertices (largest " << out.max_move << ", RMS " << out.rms_move << "); the repaired pattern folds"
+      << (options.use_letters ? " with its letters" : " (letters ignored)")
       << (out.least_move_converged ? "" : "; the steps toward the least move had not ended (stationarity " + std::to_string(out.stationarity) +
                                               "): a repair, perhaps not the least");
   return finish(RepairTermination::kRepaired, msg.str());

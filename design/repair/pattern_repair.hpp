@@ -47,10 +47,13 @@ struct RepairOptions {
   bool keep_boundary = false;          // vertices on the sheet's boundary stay where they are
   std::vector<int> fixed_vertices;     // and these too
   std::optional<double> max_move;      // largest distance any vertex may move (length unit)
+  // false (--letters free): the letters are ignored; each vertex takes its less degenerate
+  // mode, and the checks ignore the letters too ("foldable" then means: with some letters).
+  bool use_letters = true;
   int max_iterations = 60;
   double kawasaki_tolerance = 1e-13;   // radians, largest |alpha_0 + alpha_2 - pi| accepted
   double gain_tolerance = 1e-12;       // largest |log loop gain| accepted
-  FoldabilityOptions check;            // for the checks before and after (letters used)
+  FoldabilityOptions check;            // for the checks before and after (use_assignment: use_letters)
 
   // False, with the reason, for a negative or non-finite bound or tolerance, a fixed vertex
   // out of range (num_vertices: the pattern's), or max_iterations < 1.
@@ -83,6 +86,7 @@ struct RepairSummary {
   std::string message;                  // one line for the user
   FoldabilityReport before;             // the input's check
   std::optional<FoldabilityReport> after;  // the repaired pattern's check, from its FOLD text
+  bool letters_used = true;             // RepairOptions::use_letters
   std::vector<FlatFoldMode> modes;      // per interior vertex (topology order)
   std::vector<int> interior_vertices;
   int modes_chosen_without_letters = 0; // vertices where the letters allowed both modes
@@ -111,8 +115,9 @@ void require_repair_scope(const CreasePattern& pattern, const Topology& topology
 // The vertex modes the repair keeps (see above), one per interior vertex in topology order;
 // empty, with refusal set, when some vertex's letters match neither mode.
 // chosen_without_letters: the vertices where the letters allowed both.
+// use_letters false: every vertex takes its less degenerate mode, letters ignored.
 std::vector<FlatFoldMode> repair_modes(const CreasePattern& pattern, const Topology& topology, int& chosen_without_letters,
-                                       std::string& refusal);
+                                       std::string& refusal, bool use_letters = true);
 
 // Throws InputError (naming the vertex or the place) when the pattern is outside the
 // repair's scope (see above) or the options are invalid.

@@ -22,8 +22,10 @@ namespace rigidfold::python {
 void bind_repair(py::module_& m) {
   m.def(
       "repair",
-      [](const CreasePattern& pattern, bool keep_boundary, const std::vector<int>& fixed_vertices, std::optional<double> max_move) {
+      [](const CreasePattern& pattern, bool keep_boundary, const std::vector<int>& fixed_vertices, std::optional<double> max_move,
+         bool use_letters) {
         RepairOptions options;
+        options.use_letters = use_letters;
         options.keep_boundary = keep_boundary;
         options.fixed_vertices = fixed_vertices;
         options.max_move = max_move;
@@ -39,7 +41,7 @@ void bind_repair(py::module_& m) {
         return d;
       },
       py::arg("pattern"), py::arg("keep_boundary") = false, py::arg("fixed_vertices") = std::vector<int>{},
-      py::arg("max_move") = py::none(),
+      py::arg("max_move") = py::none(), py::arg("use_letters") = true,
       "The least vertex move that makes a flat pattern of degree-4 vertices rigidly foldable with its letters "
       "(`rigidfold repair --json`'s object) with 'repaired': the moved pattern, or None when it does not fold "
       "(see 'termination'). docs/cli/repair.md.");

@@ -60,6 +60,25 @@ TEST(RepairCli, BadVertexIndexIsExit2NamingTheFlag) {
   EXPECT_FALSE(std::filesystem::exists(d.path("repaired.fold")));
 }
 
+// Origami Simulator's square twists: their loop gain in the letters' modes is far from 1 (e^2.2
+// and e^5.3); the least move that closes it collapses the twist until creases cross, so no file
+// is written and the violation left at the last valid pattern along the move is reported.
+TEST(RepairCli, OrigamiSimulatorsSquareTwistsGetTheViolationLeftNotARepair) {
+  RepairDir d;
+  for (const char* name : {"singlesquaretwist.svg", "squaretwistManyAngles.svg"}) {
+    const std::string svg = std::string(RIGIDFOLD_CORPUS_DIR) + "/origami-simulator/" + name;
+    const auto r = test::run_command(test::cli() + " repair " + svg + " --out " + d.path("twist.fold") + " --json");
+    EXPECT_EQ(r.status, 3) << name << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["termination"], "no valid pattern") << name;
+    EXPECT_TRUE(j["out"].is_null());
+    EXPECT_GT(j["violation"]["loop_gain_before"].get<double>(), 2.0) << name;
+    EXPECT_LT(j["violation"]["loop_gain_after"].get<double>(), 1e-3) << name;
+    EXPECT_NE(j["message"].get<std::string>().find("last valid pattern"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(d.path("twist.fold")));
+  }
+}
+
 TEST(RepairCli, AddCreasesWritesTheSeedsDiagonalForTheType2Twist) {
   RepairDir d;
   const std::string twist = std::string(RIGIDFOLD_SOURCE_DIR) + "/data/bundled/square_twist_30_type2.fold";

@@ -134,6 +134,23 @@ TEST(PatternRepair, LettersMatchingNoModeAreNotRepairable) {
   EXPECT_NE(s.message.find("vertex " + std::to_string(v)), std::string::npos) << s.message;
 }
 
+// --letters free: the letters are ignored, each vertex takes its less degenerate mode (on a Miura
+// vertex the Miura mode), so four mountains at a vertex no longer stop the repair.
+TEST(PatternRepair, WithLettersFreeEveryVertexTakesItsLessDegenerateMode) {
+  CreasePattern p = generators::miura_ori(jittered_miura(0.03, 3, 3, 3));
+  const Topology t = build_topology(p);
+  for (int e : t.stars[t.interior_vertices[0]].fans[0].edges) p.assignments[e] = Assignment::Mountain;
+  RepairOptions o;
+  o.use_letters = false;
+  const RepairSummary s = repair_pattern(p, t, o);
+  ASSERT_EQ(s.termination, RepairTermination::kRepaired) << s.message;
+  EXPECT_FALSE(s.letters_used);
+  EXPECT_EQ(s.modes_chosen_without_letters, static_cast<int>(t.interior_vertices.size()));
+  for (FlatFoldMode m : s.modes) EXPECT_EQ(m, FlatFoldMode::kEqual02);
+  EXPECT_FALSE(s.after->assignment_used);
+  EXPECT_EQ(s.after->verdict, FoldabilityClass::kFoldable);
+}
+
 TEST(PatternRepair, RefusesPatternsOutsideItsModelNamingThePlace) {
   const CreasePattern w = generators::waterbomb_base(generators::WaterbombParams{});
   EXPECT_THROW(repair_pattern(w, build_topology(w)), InputError);
