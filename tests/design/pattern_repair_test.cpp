@@ -137,8 +137,13 @@ TEST(PatternRepair, LettersMatchingNoModeAreNotRepairable) {
 // --letters free: the letters are ignored, each vertex takes its less degenerate mode (on a Miura
 // vertex the Miura mode), so four mountains at a vertex no longer stop the repair.
 TEST(PatternRepair, WithLettersFreeEveryVertexTakesItsLessDegenerateMode) {
-  CreasePattern p = generators::miura_ori(jittered_miura(0.03, 3, 3, 3));
-  const Topology t = build_topology(p);
+  const CreasePattern lettered = generators::miura_ori(jittered_miura(0.03, 3, 3, 3));
+  const Topology t = build_topology(lettered);
+  int chosen = 0;
+  std::string refusal;
+  const std::vector<FlatFoldMode> miura_modes = repair_modes(lettered, t, chosen, refusal);
+  ASSERT_TRUE(refusal.empty()) << refusal;
+  CreasePattern p = lettered;
   for (int e : t.stars[t.interior_vertices[0]].fans[0].edges) p.assignments[e] = Assignment::Mountain;
   RepairOptions o;
   o.use_letters = false;
@@ -146,7 +151,9 @@ TEST(PatternRepair, WithLettersFreeEveryVertexTakesItsLessDegenerateMode) {
   ASSERT_EQ(s.termination, RepairTermination::kRepaired) << s.message;
   EXPECT_FALSE(s.letters_used);
   EXPECT_EQ(s.modes_chosen_without_letters, static_cast<int>(t.interior_vertices.size()));
-  for (FlatFoldMode m : s.modes) EXPECT_EQ(m, FlatFoldMode::kEqual02);
+  // The Miura mode at every vertex, as the Miura's letters choose it (its label, kEqual13 or
+  // kEqual02, depends on which crease the vertex's fan starts from).
+  EXPECT_EQ(s.modes, miura_modes);
   EXPECT_FALSE(s.after->assignment_used);
   EXPECT_EQ(s.after->verdict, FoldabilityClass::kFoldable);
 }
