@@ -74,6 +74,29 @@ std::string invalidity(const CreasePattern& moved) {
   }
 }
 
+// The largest fraction t of the move e (to 2^-40) at which x0 + t e is still a crease pattern
+// (moved: the pattern at the full move, which is not one).
+double last_valid_fraction(const CreasePattern& moved, const std::vector<Eigen::Vector3d>& x0, const SparseMatrix& S,
+                           const Eigen::VectorXd& e) {
+  double valid = 0.0, invalid = 1.0;
+  for (int halving = 0; halving < 40; ++halving) {
+    const double t = 0.5 * (valid + invalid);
+    CreasePattern trial = moved;
+    trial.vertices = displaced(x0, S, t * e);
+    (invalidity(trial).empty() ? valid : invalid) = t;
+  }
+  return valid;
+}
+
+// Per vertex: 1 where it stays (the boundary with keep_boundary, and the fixed vertices).
+std::vector<char> fixed_vertices(const CreasePattern& pattern, const Topology& topology, const RepairOptions& options) {
+  std::vector<char> fixed(pattern.num_vertices(), options.keep_boundary ? 1 : 0);
+  if (options.keep_boundary)
+    for (int v : topology.interior_vertices) fixed[v] = 0;
+  for (int v : options.fixed_vertices) fixed[v] = 1;
+  return fixed;
+}
+
 // The SQP's state: displacement e of the free coordinates from x0.
 struct Solve {
   Eigen::VectorXd e;
@@ -142,9 +165,47 @@ Solve least_move(const FlatFoldConstraints& constraints, const std::vector<Eigen
   return s;
 }
 
+// The distance each vertex moved (file units), the largest and the RMS.
+void record_move(const CreasePattern& pattern, const std::vector<Eigen::Vector3d>& x, RepairSummary& out) {
+  double sum_squares = 0;
+  for (int v = 0; v < pattern.num_vertices(); ++v) {
+    const double d = to_file_units(pattern, (x[v] - pattern.vertices[v]).norm());
+    out.vertex_move[v] = d;
+    sum_squares += d * d;
+    if (d > out.max_move) {
+      out.max_move = d;
+      out.worst_vertex = v;
+    }
+  }
+  out.rms_move = std::sqrt(sum_squares / std::max(1, pattern.num_vertices()));
+}
+
+// The stationarity of the move at x, and the constraints whose multipliers are largest (c0: the
+// constraints at the input).
+void record_multipliers(const FlatFoldConstraints& constraints, const Eigen::VectorXd& c0, const SparseMatrix& S, const Solve& s,
+                        const std::vector<Eigen::Vector3d>& x, RepairSummary& out) {
+  Eigen::VectorXd c;
+  SparseMatrix J;
+  constraints.evaluate(x, c, &J);
+  const Eigen::VectorXd residual = s.e - (J * S).transpose() * s.lambda;
+  out.stationarity = s.e.norm() > 0 ? residual.norm() / s.e.norm() : 0.0;
+  std::vector<int> order(constraints.rows());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(s.lambda[a]) > std::abs(s.lambda[b]); });
+  for (int r : order) {
+    if (out.costliest.size() == 8 || s.lambda[r] == 0.0) break;
+    RepairConstraint rc;
+    const bool kawasaki = r < constraints.kawasaki_rows();
+    rc.kind = kawasaki ? "kawasaki" : "loop gain";
+    rc.vertices = kawasaki ? std::vector<int>{constraints.centres()[r]} : constraints.cycle_vertices(r - constraints.kawasaki_rows());
+    rc.before = c0[r];
+    rc.lambda = s.lambda[r];
+    out.costliest.push_back(std::move(rc));
+  }
+}
+
 }  // namespace
 
-// The mode of each interior vertex: the letters' (at x0), else the less degenerate one.
 void require_repair_scope(const CreasePattern& pattern, const Topology& topology) {
   for (int v = 0; v < pattern.num_vertices(); ++v)
     if (pattern.vertices[v].z() != 0.0)
@@ -166,6 +227,7 @@ void require_repair_scope(const CreasePattern& pattern, const Topology& topology
   }
 }
 
+// The mode of each interior vertex: the letters' (at x0), else the less degenerate one.
 std::vector<FlatFoldMode> repair_modes(const CreasePattern& pattern, const Topology& topology, int& chosen_without_letters,
                                        std::string& refusal, bool use_letters) {
   std::vector<FlatFoldMode> modes;
@@ -260,12 +322,7 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
   out.kawasaki_rows = constraints.kawasaki_rows();
   out.gain_rows = constraints.gain_rows();
 
-  std::vector<char> fixed(pattern.num_vertices(), 0);
-  if (options.keep_boundary) {
-    std::fill(fixed.begin(), fixed.end(), 1);
-    for (int v : topology.interior_vertices) fixed[v] = 0;
-  }
-  for (int v : options.fixed_vertices) fixed[v] = 1;
+  const std::vector<char> fixed = fixed_vertices(pattern, topology, options);
   out.fixed_vertex_count = static_cast<int>(std::count(fixed.begin(), fixed.end(), 1));
   const SparseMatrix S = free_columns(pattern.num_vertices(), fixed, out.free_coordinates);
 
@@ -281,37 +338,8 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
   out.kawasaki_after = s.violation.kawasaki;
   out.gain_after = s.violation.gain;
   const std::vector<Eigen::Vector3d> x = displaced(pattern.vertices, S, s.e);
-  double sum_squares = 0;
-  for (int v = 0; v < pattern.num_vertices(); ++v) {
-    const double d = to_file_units(pattern, (x[v] - pattern.vertices[v]).norm());
-    out.vertex_move[v] = d;
-    sum_squares += d * d;
-    if (d > out.max_move) {
-      out.max_move = d;
-      out.worst_vertex = v;
-    }
-  }
-  out.rms_move = std::sqrt(sum_squares / std::max(1, pattern.num_vertices()));
-  if (s.lambda.size() == constraints.rows()) {
-    Eigen::VectorXd c;
-    SparseMatrix J;
-    constraints.evaluate(x, c, &J);
-    const Eigen::VectorXd residual = s.e - (J * S).transpose() * s.lambda;
-    out.stationarity = s.e.norm() > 0 ? residual.norm() / s.e.norm() : 0.0;
-    std::vector<int> order(constraints.rows());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(s.lambda[a]) > std::abs(s.lambda[b]); });
-    for (int r : order) {
-      if (out.costliest.size() == 8 || s.lambda[r] == 0.0) break;
-      RepairConstraint rc;
-      const bool kawasaki = r < out.kawasaki_rows;
-      rc.kind = kawasaki ? "kawasaki" : "loop gain";
-      rc.vertices = kawasaki ? std::vector<int>{constraints.centres()[r]} : constraints.cycle_vertices(r - out.kawasaki_rows);
-      rc.before = c0[r];
-      rc.lambda = s.lambda[r];
-      out.costliest.push_back(std::move(rc));
-    }
-  }
+  record_move(pattern, x, out);
+  if (s.lambda.size() == constraints.rows()) record_multipliers(constraints, c0, S, s, x, out);
   if (!s.converged) return finish(RepairTermination::kNoConvergence, s.failure);
   if (options.max_move && out.max_move > *options.max_move) {
     // The violation left at the largest step along the least move that keeps within the bound.
@@ -330,14 +358,7 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
   out.repaired.vertices = x;
   out.repaired.position_bounds = {};
   if (const std::string why = invalidity(out.repaired); !why.empty()) {
-    // The last valid pattern along the least move, and the violation it leaves.
-    double valid = 0.0, invalid = 1.0;
-    for (int halving = 0; halving < 40; ++halving) {
-      const double t = 0.5 * (valid + invalid);
-      CreasePattern trial = out.repaired;
-      trial.vertices = displaced(pattern.vertices, S, t * s.e);
-      (invalidity(trial).empty() ? valid : invalid) = t;
-    }
+    const double valid = last_valid_fraction(out.repaired, pattern.vertices, S, s.e);
     Eigen::VectorXd c;
     constraints.evaluate(displaced(pattern.vertices, S, valid * s.e), c, nullptr);
     const Violation last = violation_of(c, out.kawasaki_rows);
