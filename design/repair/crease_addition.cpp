@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/validate_pattern.hpp"
@@ -26,9 +27,9 @@ std::vector<Diagonal> face_diagonals(const CreasePattern& pattern) {
   return out;
 }
 
-// The pattern with the given diagonals added as creases (each splitting its face), or nullopt
-// when that is no valid pattern. The diagonals lie in different faces.
-std::optional<CreasePattern> with_creases(const CreasePattern& pattern, const std::vector<std::pair<Diagonal, Assignment>>& added) {
+// The pattern with the given diagonals added as creases (each splitting its face), with its
+// topology, or nullopt when that is no valid pattern. The diagonals lie in different faces.
+std::optional<std::pair<CreasePattern, Topology>> with_creases(const CreasePattern& pattern, const std::vector<std::pair<Diagonal, Assignment>>& added) {
   CreasePattern p = pattern;
   p.position_bounds = {};
   for (const auto& [d, letter] : added) {
@@ -44,11 +45,11 @@ std::optional<CreasePattern> with_creases(const CreasePattern& pattern, const st
   }
   try {
     complete_and_validate(p, "pattern with added creases");
-    build_topology(p, "pattern with added creases");
+    Topology t = build_topology(p, "pattern with added creases");
+    return std::pair{std::move(p), std::move(t)};
   } catch (const InputError&) {
     return std::nullopt;
   }
-  return p;
 }
 
 }  // namespace
@@ -88,15 +89,15 @@ CreaseAdditionSummary add_creases(const CreasePattern& pattern, const Topology& 
       out.budget_exhausted = true;
       return false;
     }
-    std::optional<CreasePattern> p = with_creases(pattern, added);
+    std::optional<std::pair<CreasePattern, Topology>> p = with_creases(pattern, added);
     if (!p) return true;
     ++out.checks;
-    FoldabilityReport r = check_foldability(*p, build_topology(*p, "pattern with added creases"), check);
+    FoldabilityReport r = check_foldability(p->first, p->second, check);
     if (r.verdict != FoldabilityClass::kFoldable) return true;
     CreaseAddition a;
     for (const auto& [d, letter] : added)
       a.creases.push_back({pattern.faces[d.face][d.i], pattern.faces[d.face][d.j], d.face, letter});
-    a.pattern = std::move(*p);
+    a.pattern = std::move(p->first);
     a.check = std::move(r);
     out.found.push_back(std::move(a));
     return true;

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
-#include <set>
 #include <sstream>
 
 #include "kernel/analysis/flat_fold_constraints.hpp"
@@ -52,6 +51,14 @@ std::vector<Eigen::Vector3d> displaced(const std::vector<Eigen::Vector3d>& x0, c
   return x;
 }
 
+// The constraints' violation at the displacement e of the free coordinates.
+Violation violation_at(const FlatFoldConstraints& constraints, const std::vector<Eigen::Vector3d>& x0, const SparseMatrix& S,
+                       const Eigen::VectorXd& e) {
+  Eigen::VectorXd c;
+  constraints.evaluate(displaced(x0, S, e), c, nullptr);
+  return violation_of(c, constraints.kawasaki_rows());
+}
+
 double bounding_diagonal(const std::vector<Eigen::Vector3d>& x) {
   if (x.empty()) return 0.0;
   Eigen::Vector3d lo = x[0], hi = x[0];
@@ -62,16 +69,24 @@ double bounding_diagonal(const std::vector<Eigen::Vector3d>& x) {
   return (hi - lo).norm();
 }
 
-// Why the pattern with moved vertices is no crease pattern (creases crossing, a vertex on a
-// crease, a face turned over), or empty: the checks of reading its FOLD text.
-std::string invalidity(const CreasePattern& moved) {
+// The pattern with moved vertices as the user gets it: its FOLD text read back, with its
+// topology; or why that is no crease pattern (creases crossing, a vertex on a crease, a face
+// turned over), from the checks of reading it.
+struct Reread {
+  CreasePattern pattern;
+  Topology topology;
+  std::string invalidity;  // empty when valid
+};
+
+Reread reread(const CreasePattern& moved) {
+  Reread out;
   try {
-    const CreasePattern reread = parse_fold(write_fold_string(moved), "repaired pattern");
-    build_topology(reread, "repaired pattern");
-    return "";
+    out.pattern = parse_fold(write_fold_string(moved), "repaired pattern");
+    out.topology = build_topology(out.pattern, "repaired pattern");
   } catch (const InputError& e) {
-    return e.what();
+    out.invalidity = e.what();
   }
+  return out;
 }
 
 // The largest fraction t of the move e (to 2^-40) at which x0 + t e is still a crease pattern
@@ -83,7 +98,7 @@ double last_valid_fraction(const CreasePattern& moved, const std::vector<Eigen::
     const double t = 0.5 * (valid + invalid);
     CreasePattern trial = moved;
     trial.vertices = displaced(x0, S, t * e);
-    (invalidity(trial).empty() ? valid : invalid) = t;
+    (reread(trial).invalidity.empty() ? valid : invalid) = t;
   }
   return valid;
 }
@@ -343,10 +358,7 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
   if (!s.converged) return finish(RepairTermination::kNoConvergence, s.failure);
   if (options.max_move && out.max_move > *options.max_move) {
     // The violation left at the largest step along the least move that keeps within the bound.
-    const double t = *options.max_move / out.max_move;
-    Eigen::VectorXd c;
-    constraints.evaluate(displaced(pattern.vertices, S, t * s.e), c, nullptr);
-    const Violation at_bound = violation_of(c, out.kawasaki_rows);
+    const Violation at_bound = violation_at(constraints, pattern.vertices, S, (*options.max_move / out.max_move) * s.e);
     out.kawasaki_after = at_bound.kawasaki;
     out.gain_after = at_bound.gain;
     std::ostringstream msg;
@@ -357,11 +369,10 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
   }
   out.repaired.vertices = x;
   out.repaired.position_bounds = {};
-  if (const std::string why = invalidity(out.repaired); !why.empty()) {
+  const Reread written = reread(out.repaired);
+  if (const std::string& why = written.invalidity; !why.empty()) {
     const double valid = last_valid_fraction(out.repaired, pattern.vertices, S, s.e);
-    Eigen::VectorXd c;
-    constraints.evaluate(displaced(pattern.vertices, S, valid * s.e), c, nullptr);
-    const Violation last = violation_of(c, out.kawasaki_rows);
+    const Violation last = violation_at(constraints, pattern.vertices, S, valid * s.e);
     out.kawasaki_after = last.kawasaki;
     out.gain_after = last.gain;
     out.repaired = pattern;
@@ -372,11 +383,9 @@ RepairSummary repair_pattern(const CreasePattern& pattern, const Topology& topol
     return finish(RepairTermination::kInvalidPattern, msg.str());
   }
   // Judged from scratch: the FOLD text the user gets, read back, its numbers taken as exact.
-  const CreasePattern reread = parse_fold(write_fold_string(out.repaired), "repaired pattern");
-  const Topology reread_topology = build_topology(reread, "repaired pattern");
   FoldabilityOptions exact = check;
   exact.coordinate_tolerance = 0.0;
-  out.after = check_foldability(reread, reread_topology, exact);
+  out.after = check_foldability(written.pattern, written.topology, exact);
   if (out.after->verdict != FoldabilityClass::kFoldable)
     return finish(RepairTermination::kCheckDisagrees,
                   "the constraints hold, but the repaired pattern's check says " + std::string(to_string(out.after->verdict)) + ": " +
