@@ -13,6 +13,7 @@
 #include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/read_pattern.hpp"
 #include "kernel/pattern/topology.hpp"
+#include "report/assignments_json.hpp"
 
 namespace rigidfold::cli {
 
@@ -50,36 +51,7 @@ void add_assignments_command(CLI::App& app) {
       o.progress = progress.sink();
       return enumerate_assignments(p, t, o, a->pattern);
     }();
-    nlohmann::ordered_json j;
-    j["file"] = a->pattern;
-    j["creases"] = r.creases;
-    j["symmetry_order"] = r.symmetry_order;
-    j["symmetry_rotations"] = r.symmetry_rotations;
-    j["complete"] = r.complete;
-    j["search_steps"] = r.search_steps;
-    j["assignments"] = r.assignments;
-    // A stopped search has seen only the representatives it reached: the class count is unknown
-    // (null), and the representatives reached are counted apart.
-    j["classes"] = r.complete ? nlohmann::ordered_json(r.class_count) : nlohmann::ordered_json(nullptr);
-    if (!r.complete) j["classes_reached"] = r.class_count;
-    j["classes_with_verdict"] = r.verdicts;
-    j["foldable_classes"] = r.foldable_classes;
-    j["not_foldable_classes"] = r.not_foldable_classes;
-    j["undecided_classes"] = r.undecided_classes;
-    if (r.blocking_vertex >= 0) j["no_assignment_because"] = {{"vertex", r.blocking_vertex}, {"reason", r.blocking_reason}};
-    nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const auto& c : r.classes) {
-      nlohmann::ordered_json cj = {{"letters", c.letters}, {"orbit_size", c.orbit_size}};
-      if (c.verdict_run) {
-        cj["verdict"] = to_string(c.verdict);
-        cj["is_proof"] = c.is_proof;
-        cj["dof"] = c.dof;
-        cj["reason"] = c.reason;
-      }
-      list.push_back(cj);
-    }
-    j["listed"] = list;
-    j["seconds"] = r.seconds;
+    const nlohmann::ordered_json j = report::assignment_enumeration_json(r, a->pattern, {});
     if (a->json) {
       std::cout << document_text(j) << "\n";
       return;

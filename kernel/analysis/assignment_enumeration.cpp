@@ -1,5 +1,6 @@
 #include "kernel/analysis/assignment_enumeration.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -23,21 +24,36 @@ struct VertexRule {
   std::vector<std::uint32_t> masks;   // flat-folding letter sets (bit i: positions[i] is V)
 };
 
+// The search's order and group, from the pattern alone.
+struct SearchPlan {
+  std::vector<VertexRule> rules;      // interior vertices in search order
+  std::vector<int> free_positions;    // creases on no interior vertex
+  std::vector<std::vector<int>> perms;  // the group on crease positions: perm[j] = the position whose image is j
+};
+
 // Letters: 0 mountain, 1 valley, -1 not set yet.
 class Search {
  public:
   Search(const CreasePattern& pattern, const Topology& topology, const AssignmentEnumerationOptions& options,
-         AssignmentEnumeration& out, std::vector<VertexRule> rules, std::vector<int> free_positions,
-         std::vector<std::vector<int>> permutations)
-      : topology_(topology), options_(options), out_(out), rules_(std::move(rules)),
-        free_(std::move(free_positions)), perms_(std::move(permutations)), letters_(out.creases.size(), -1),
+         AssignmentEnumeration& out, SearchPlan plan)
+      : topology_(topology), options_(options), out_(out), rules_(std::move(plan.rules)),
+        free_(std::move(plan.free_positions)), perms_(std::move(plan.perms)), letters_(out.creases.size(), -1),
         work_(pattern) {}
 
   void run() {
     vertex_step(0);
-    if (out_.complete && orbit_total_ != out_.assignments)
+    // Only the whole search meets every member of the classes it finds.
+    if (options_.branch.empty() && out_.complete && orbit_total_ != out_.assignments)
       throw std::logic_error("enumerate_assignments: the orbit sizes sum to " + std::to_string(orbit_total_) +
                              ", not to the " + std::to_string(out_.assignments) + " assignments found");
+  }
+
+  // The subtrees at `depth` vertices instead of the assignments.
+  std::vector<std::vector<int>> branches(std::size_t depth) {
+    list_depth_ = std::min(depth, rules_.size());
+    listing_ = true;
+    vertex_step(0);
+    return std::move(listed_);
   }
 
  private:
@@ -49,13 +65,19 @@ class Search {
       out_.complete = false;
       return;
     }
+    if (listing_ && k == list_depth_) {
+      listed_.push_back(path_);
+      return;
+    }
     if (k == rules_.size()) {
       free_step(0);
       return;
     }
     const VertexRule& r = rules_[k];
     std::vector<int> newly;
-    for (std::uint32_t mask : r.masks) {
+    for (std::size_t choice = 0; choice < r.masks.size(); ++choice) {
+      if (k < options_.branch.size() && static_cast<std::size_t>(options_.branch[k]) != choice) continue;
+      const std::uint32_t mask = r.masks[choice];
       bool fits = true;
       for (std::size_t i = 0; i < r.positions.size() && fits; ++i) {
         const int want = static_cast<int>((mask >> i) & 1u);
@@ -69,7 +91,9 @@ class Search {
           letters_[r.positions[i]] = static_cast<int>((mask >> i) & 1u);
           newly.push_back(r.positions[i]);
         }
+      path_.push_back(static_cast<int>(choice));
       vertex_step(k + 1);
+      path_.pop_back();
       for (int p : newly) letters_[p] = -1;
       if (stopped()) return;
     }
@@ -147,14 +171,16 @@ class Search {
   std::vector<int> letters_;
   CreasePattern work_;
   long orbit_total_ = 0;
+  std::vector<int> path_;  // the letter set chosen at each vertex so far
+  bool listing_ = false;
+  std::size_t list_depth_ = 0;
+  std::vector<std::vector<int>> listed_;
 };
 
-}  // namespace
-
-AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const Topology& topology,
-                                            const AssignmentEnumerationOptions& options, const std::string& source) {
-  const auto start = std::chrono::steady_clock::now();
-  AssignmentEnumeration out;
+// Fills out.creases, the symmetry counts and, for a vertex that blocks every assignment,
+// out.blocking_vertex (then the plan is not used).
+SearchPlan plan_search(const CreasePattern& pattern, const Topology& topology, const AssignmentEnumerationOptions& options,
+                       const std::string& source, AssignmentEnumeration& out) {
   for (int v = 0; v < pattern.num_vertices(); ++v)
     if (pattern.vertices[v].z() != 0.0)
       throw InputError(source + ": vertices_coords[" + std::to_string(v) + "]",
@@ -212,15 +238,12 @@ AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const 
     for (int p : r.positions) on_vertex[p] = true;
     rules.push_back(std::move(r));
   }
-  if (out.blocking_vertex >= 0) {
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return out;
-  }
+  SearchPlan plan;
+  if (out.blocking_vertex >= 0) return plan;
   // Breadth-first order over shared creases, so that each vertex meets letters already set.
   std::vector<std::vector<int>> rules_of(out.creases.size());
   for (int k = 0; k < static_cast<int>(rules.size()); ++k)
     for (int p : rules[k].positions) rules_of[p].push_back(k);
-  std::vector<VertexRule> ordered;
   std::vector<bool> seen(rules.size(), false);
   for (int s = 0; s < static_cast<int>(rules.size()); ++s) {
     if (seen[s]) continue;
@@ -230,7 +253,7 @@ AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const 
     while (!q.empty()) {
       const int k = q.front();
       q.pop();
-      ordered.push_back(rules[k]);
+      plan.rules.push_back(rules[k]);
       for (int p : rules[k].positions)
         for (int j : rules_of[p])
           if (!seen[j]) {
@@ -239,12 +262,9 @@ AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const 
           }
     }
   }
-  std::vector<int> free_positions;
   for (int p = 0; p < static_cast<int>(out.creases.size()); ++p)
-    if (!on_vertex[p]) free_positions.push_back(p);
+    if (!on_vertex[p]) plan.free_positions.push_back(p);
 
-  // The group acting on crease positions: perm[j] = the position whose image is position j.
-  std::vector<std::vector<int>> perms;
   std::vector<PatternSymmetry> group;
   if (options.symmetry) group = pattern_symmetries(pattern);
   else group.resize(1);
@@ -257,13 +277,38 @@ AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const 
       const int image = g.edge_map.empty() ? out.creases[i] : g.edge_map[out.creases[i]];
       perm[position[image]] = i;
     }
-    perms.push_back(std::move(perm));
+    plan.perms.push_back(std::move(perm));
   }
+  for (std::size_t k = 0; k < options.branch.size(); ++k)
+    if (k >= plan.rules.size() || options.branch[k] < 0 ||
+        options.branch[k] >= static_cast<int>(plan.rules[k].masks.size()))
+      throw InputError(source + ": branch[" + std::to_string(k) + "]",
+                       std::to_string(options.branch[k]) + ": the search's vertex " + std::to_string(k) +
+                           (k < plan.rules.size() ? " has " + std::to_string(plan.rules[k].masks.size()) + " letter sets"
+                                                  : " does not exist (" + std::to_string(plan.rules.size()) + " vertices)"));
+  return plan;
+}
 
-  Search search(pattern, topology, options, out, std::move(ordered), std::move(free_positions), std::move(perms));
-  search.run();
+}  // namespace
+
+AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const Topology& topology,
+                                            const AssignmentEnumerationOptions& options, const std::string& source) {
+  const auto start = std::chrono::steady_clock::now();
+  AssignmentEnumeration out;
+  SearchPlan plan = plan_search(pattern, topology, options, source, out);
+  if (out.blocking_vertex < 0) Search(pattern, topology, options, out, std::move(plan)).run();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::vector<std::vector<int>> assignment_search_branches(const CreasePattern& pattern, const Topology& topology, int depth,
+                                                         const AssignmentEnumerationOptions& options,
+                                                         const std::string& source) {
+  if (depth < 0) throw InputError(source + ": depth", std::to_string(depth) + ": must be >= 0");
+  AssignmentEnumeration out;
+  SearchPlan plan = plan_search(pattern, topology, options, source, out);
+  if (out.blocking_vertex >= 0) return {};
+  return Search(pattern, topology, options, out, std::move(plan)).branches(static_cast<std::size_t>(depth));
 }
 
 }  // namespace rigidfold

@@ -32,6 +32,11 @@ struct AssignmentEnumerationOptions {
   long max_verdicts = 100'000;      // classes given a verdict at most (the rest counted only)
   int max_listed = 1000;            // classes kept with their letters in `classes`
   bool symmetry = true;             // false: classes under the global flip only
+  // One subtree of the search (assignment_search_branches lists them): at the k-th vertex of the
+  // search order, only its branch[k]-th flat-folding letter set. Empty: the whole search. The
+  // subtrees of one depth split the search without overlap, in its order: their classes, joined
+  // in branch order, are the whole search's (each class lies in the subtree of its representative).
+  std::vector<int> branch;
   ProgressSink progress;
 };
 
@@ -70,5 +75,13 @@ struct AssignmentEnumeration {
 AssignmentEnumeration enumerate_assignments(const CreasePattern& pattern, const Topology& topology,
                                             const AssignmentEnumerationOptions& options = {},
                                             const std::string& source = "PATTERN");
+
+// The subtrees of the search at `depth` vertices (fewer when the search has fewer vertices), in
+// search order, each a value for AssignmentEnumerationOptions::branch; only the subtrees with a
+// letter set at each of their vertices that fits the letters set before it. Empty when a vertex
+// blocks every assignment (AssignmentEnumeration::blocking_vertex). Throws as enumerate_assignments.
+std::vector<std::vector<int>> assignment_search_branches(const CreasePattern& pattern, const Topology& topology, int depth,
+                                                         const AssignmentEnumerationOptions& options = {},
+                                                         const std::string& source = "PATTERN");
 
 }  // namespace rigidfold

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "report/assignments_json.hpp"
 #include "report/foldability_json.hpp"
 #include "kernel/analysis/assignment_enumeration.hpp"
 #include "kernel/analysis/foldability_report.hpp"
@@ -158,7 +160,7 @@ void bind_analysis(py::module_& m) {
   m.def(
       "enumerate_assignments",
       [](const CreasePattern& pattern, bool symmetry, long max_assignments, long max_verdicts, int max_listed,
-         const std::string& source) {
+         const std::string& source, const std::vector<int>& branch) {
         AssignmentEnumeration r;
         const ProgressSink interrupt = interrupt_on_signal();  // made while the GIL is held
         {
@@ -170,49 +172,36 @@ void bind_analysis(py::module_& m) {
           options.max_verdicts = max_verdicts;
           options.max_listed = max_listed;
           options.progress = interrupt;
+          options.branch = branch;
           r = enumerate_assignments(pattern, topology, options, source);
         }
-        py::list classes;
-        for (const AssignmentClass& c : r.classes) {
-          py::dict cd;
-          cd["letters"] = c.letters;
-          cd["orbit_size"] = c.orbit_size;
-          cd["verdict_run"] = c.verdict_run;
-          cd["verdict_class"] = to_string(c.verdict);
-          cd["is_proof"] = c.is_proof;
-          cd["dof"] = c.dof;
-          cd["reason"] = c.reason;
-          classes.append(cd);
-        }
-        py::dict d;
-        d["creases"] = r.creases;
-        d["symmetry_order"] = r.symmetry_order;
-        d["symmetry_rotations"] = r.symmetry_rotations;
-        d["assignments"] = r.assignments;
-        // As the CLI: a stopped search knows no class count (None), only the representatives reached.
-        d["class_count"] = r.complete ? py::object(py::int_(r.class_count)) : py::object(py::none());
-        d["classes_reached"] = r.class_count;
-        d["verdicts"] = r.verdicts;
-        d["foldable_classes"] = r.foldable_classes;
-        d["not_foldable_classes"] = r.not_foldable_classes;
-        d["undecided_classes"] = r.undecided_classes;
-        d["complete"] = r.complete;
-        d["search_steps"] = r.search_steps;
-        d["classes"] = classes;
-        d["blocking_vertex"] = r.blocking_vertex;
-        d["blocking_reason"] = r.blocking_reason;
-        d["seconds"] = r.seconds;
-        return d;
+        return json_to_python(report::assignment_enumeration_json(r, source, branch));
       },
       py::arg("pattern"), py::arg("symmetry") = true, py::arg("max_assignments") = 50'000'000L,
       py::arg("max_verdicts") = 100'000L, py::arg("max_listed") = 1000, py::arg("source") = "PATTERN",
+      py::arg("branch") = std::vector<int>{},
       "Every M-V assignment of the creases (M, V, U edges) that folds each interior vertex flat, in classes "
-      "under the pattern's symmetry group and the global M/V flip, each class with its rigid-foldability verdict "
-      "(as `rigidfold assignments`). Returns a dict: assignments, class_count (None when the search was stopped: "
-      "classes_reached then counts the representatives it reached), foldable_classes, "
-      "not_foldable_classes, undecided_classes, complete, creases (edge of each letter position), classes "
-      "[{letters, orbit_size, verdict_class, is_proof, dof, reason}], blocking_vertex/blocking_reason (a vertex "
-      "off Kawasaki or of odd degree; -1 if none), symmetry_order, seconds.");
+      "under the pattern's symmetry group and the global M/V flip, each class with its rigid-foldability verdict: "
+      "the dict `rigidfold assignments --json` prints (report/assignments_json.hpp): assignments, classes (their "
+      "count; None when the search was stopped: classes_reached counts the representatives it reached), "
+      "classes_with_verdict, foldable_classes, not_foldable_classes, undecided_classes, complete, creases (edge of "
+      "each letter position), listed [{letters, orbit_size, verdict, is_proof, dof, reason}] (the first "
+      "max_listed classes), no_assignment_because {vertex, reason} (a vertex off Kawasaki or of odd degree), "
+      "symmetry_order, file (source), branch, seconds.\n"
+      "branch: one subtree of the search (a list from assignment_branches): its classes only; the subtrees of one "
+      "depth, joined in their order, give the whole search's classes (rigidfold.sweep splits the search so).");
+  m.def(
+      "assignment_branches",
+      [](const CreasePattern& pattern, int depth, bool symmetry, const std::string& source) {
+        py::gil_scoped_release release;
+        const Topology topology = build_topology(pattern, source);
+        AssignmentEnumerationOptions options;
+        options.symmetry = symmetry;
+        return assignment_search_branches(pattern, topology, depth, options, source);
+      },
+      py::arg("pattern"), py::arg("depth"), py::arg("symmetry") = true, py::arg("source") = "PATTERN",
+      "The subtrees of enumerate_assignments' search at `depth` vertices, in search order: lists of letter-set "
+      "indices, each a `branch` for enumerate_assignments. Empty when a vertex blocks every assignment.");
 }
 
 }  // namespace rigidfold::python

@@ -9,7 +9,8 @@ Units and signs are the kernel's: fold angles and sector angles in radians, FOLD
 Patterns:   load (.fold, .svg, .opx), parse_fold, save, svg_text, dxf_text, CreasePattern (.vertices, .edges, .assignments, .faces,
             .fold_angles), bundled_examples, miura_ori, miura_fold_angles, square_twist,
             waterbomb_base, corrugated_unit
-Analysis:   check, trace, enumerate_assignments
+Analysis:   check, trace, enumerate_assignments, assignment_branches
+Sweeps:     rigidfold.sweep (many tasks on Dask distributed: python3 -m rigidfold.sweep SPEC.json --out R.jsonl)
 Any pattern: repair (least vertex move to rigid foldability), add_creases (fewest added face
             diagonals), nearest_closed_state (closed state nearest to target angles)
 Vertex:     flat_fold_angles, flat_fold_multipliers, miura_vertex
@@ -37,6 +38,7 @@ from rigidfold._core import (
     CreasePattern,
     design_string_from_curve,
     dxf_text,
+    assignment_branches,
     enumerate_assignments,
     flat_fold_angles,
     flat_fold_multipliers,
@@ -84,11 +86,21 @@ def closure_jacobian(pattern, fold_angles, fixed=()):
     return residual, jacobian, system.free_edges
 
 
+def __getattr__(name):
+    # rigidfold.sweep (a callable module) is imported on first use: it needs Dask only then, and
+    # `python3 -m rigidfold.sweep` must find it not yet imported.
+    if name == "sweep":
+        import importlib
+        return importlib.import_module("rigidfold.sweep")
+    raise AttributeError(f"module 'rigidfold' has no attribute {name!r}")
+
+
 __all__ = [
     "ClosureSystem",
     "CreasePattern",
     "InputError",
     "NoAnswerError",
+    "assignment_branches",
     "bundled_examples",
     "check",
     "closure_jacobian",

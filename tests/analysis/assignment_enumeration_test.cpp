@@ -21,6 +21,7 @@
 #include "data/generators/waterbomb.hpp"
 #include "kernel/analysis/assignment_enumeration.hpp"
 #include "kernel/pattern/assignment.hpp"
+#include "kernel/pattern/input_error.hpp"
 #include "kernel/pattern/pattern_symmetry.hpp"
 #include "kernel/pattern/topology.hpp"
 #include "kernel/pattern/vertex_letter_rules.hpp"
@@ -231,6 +232,56 @@ TEST(AssignmentEnumeration, MiuraCountsAreGridThreeColouringsOverThree) {
     ASSERT_TRUE(r.complete);
     EXPECT_EQ(r.assignments, grid_three_colourings(n, n) / 3) << n;  // 82, 2604, 193662
     EXPECT_EQ(r.verdicts, 0);
+  }
+}
+
+// The subtrees of one depth split the search: joined in their order, their classes are the whole
+// search's, in the same order, and their assignments add up to the whole count; a branch that
+// does not exist is refused naming it.
+TEST(AssignmentEnumeration, BranchesOfOneDepthJoinToTheWholeSearch) {
+  generators::MiuraParams m;
+  m.rows = 4;
+  m.cols = 3;
+  const auto p = generators::miura_ori(m);
+  const Topology t = build_topology(p);
+  AssignmentEnumerationOptions o;
+  o.max_verdicts = 0;
+  o.max_listed = 1'000'000;
+  const AssignmentEnumeration whole = enumerate_assignments(p, t, o);
+  ASSERT_TRUE(whole.complete);
+  ASSERT_EQ(static_cast<long>(whole.classes.size()), whole.class_count);
+  for (int depth : {0, 1, 2, 3}) {
+    const auto branches = assignment_search_branches(p, t, depth, o);
+    ASSERT_FALSE(branches.empty());
+    if (depth == 0) {
+      EXPECT_EQ(branches.size(), 1u);
+    }
+    long assignments = 0, orbit_sum = 0;
+    std::vector<std::string> joined;
+    for (const auto& b : branches) {
+      EXPECT_EQ(static_cast<int>(b.size()), depth);
+      AssignmentEnumerationOptions part = o;
+      part.branch = b;
+      const AssignmentEnumeration r = enumerate_assignments(p, t, part);
+      ASSERT_TRUE(r.complete);
+      assignments += r.assignments;
+      for (const auto& c : r.classes) {
+        joined.push_back(c.letters);
+        orbit_sum += c.orbit_size;
+      }
+    }
+    EXPECT_EQ(assignments, whole.assignments) << depth;
+    EXPECT_EQ(orbit_sum, whole.assignments) << depth;
+    ASSERT_EQ(joined.size(), whole.classes.size()) << depth;
+    for (std::size_t i = 0; i < joined.size(); ++i) EXPECT_EQ(joined[i], whole.classes[i].letters) << depth << " " << i;
+  }
+  AssignmentEnumerationOptions bad = o;
+  bad.branch = {99};
+  try {
+    enumerate_assignments(p, t, bad, "miura.fold");
+    FAIL() << "branch {99} accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("miura.fold: branch[0]"), std::string::npos) << e.what();
   }
 }
 
