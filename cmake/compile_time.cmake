@@ -11,6 +11,8 @@
 # differ between the files of a target (a file's anonymous namespace is shared with its unit):
 # the tests keep theirs in `namespace { namespace RIGIDFOLD_UNITY_ID {`, a name unique to each
 # file in a unit (CMake's UNITY_BUILD_UNIQUE_ID) and empty otherwise.
+# The decompositions of kernel/math/eigen_instantiations.hpp are declared extern in every unit,
+# so that their code is compiled once (tangent_cone.cpp: 87 s -> 28 s, clang 14, ASan + UBSan).
 # Every source still includes what it uses: the header is forced in first, it does not replace
 # a file's own includes. -DRIGIDFOLD_PRECOMPILED_HEADERS=OFF turns both off (to check that every
 # file compiles on its own includes).
@@ -32,7 +34,9 @@ function(rigidfold_compile_time target)
     <algorithm> <array> <cmath> <cstdint> <cstdio> <filesystem> <fstream> <functional> <iostream>
     <limits> <map> <memory> <numbers> <optional> <random> <set> <sstream> <stdexcept> <string>
     <utility> <vector>
-    <Eigen/Core> <Eigen/Dense> <Eigen/SparseCore> <nlohmann/json.hpp>)
+    <Eigen/Core> <Eigen/Dense> <Eigen/SparseCore> <nlohmann/json.hpp>
+    # Eigen's dense decompositions declared extern: compiled once, in the kernel library.
+    "${PROJECT_SOURCE_DIR}/kernel/math/eigen_instantiations.hpp")
   if(FAST_GTEST)
     list(APPEND headers <gtest/gtest.h>)
   endif()
