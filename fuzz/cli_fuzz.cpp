@@ -1,11 +1,12 @@
 // libFuzzer targets that drive whole `rigidfold` commands in-process through run_cli (the
-// same exit-status mapping as the executable), one target per user-input entry:
-//   RIGIDFOLD_FUZZ_ENTRY 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold, then --target INPUT
-//   RIGIDFOLD_FUZZ_ENTRY 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 3  string_target_fuzz  string design INPUT --out O.fold
-//   RIGIDFOLD_FUZZ_ENTRY 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|metamaterial|check|thick|sorce|repair + flags
-//   RIGIDFOLD_FUZZ_ENTRY 5  sorce_spec_fuzz     sorce VERTEX_A.fold --thickness 0.1 --offsets INPUT --out DIR
-//   RIGIDFOLD_FUZZ_ENTRY 6  network_json_fuzz   network INPUT --json --trace 4
+// same exit-status mapping as the executable), one target per user-input entry. This file is
+// compiled once and linked into each target; the target's name (argv[0]) picks its entry:
+//   entry 1  angles_json_fuzz    fold BUNDLED.fold --angles INPUT --out O.fold, then --target INPUT
+//   entry 2  string_spec_fuzz    string forward INPUT --theta 20 --out O.fold
+//   entry 3  string_target_fuzz  string design INPUT --out O.fold
+//   entry 4  cli_flags_fuzz      generate|trace|vertex|waterbomb|assignments|energy|metamaterial|check|thick|sorce|repair + flags
+//   entry 5  sorce_spec_fuzz     sorce VERTEX_A.fold --thickness 0.1 --offsets INPUT --out DIR
+//   entry 6  network_json_fuzz   network INPUT --json --trace 4
 // The input is written to a file in a private temporary directory. A bad input must end in exit 2 and a good one in 0; exit 1 ("internal
 // error", an exception that is not bad input) aborts, so libFuzzer reports it with the
 // input, like a crash.
@@ -23,11 +24,20 @@
 
 #include "app/commands.hpp"
 
-#ifndef RIGIDFOLD_FUZZ_ENTRY
-#error "define RIGIDFOLD_FUZZ_ENTRY (1..5)"
-#endif
-
 namespace {
+
+// The entry of this target (1..6 above), from its name.
+int g_entry = 0;
+
+int entry_of(const std::string& program) {
+  const std::string name = program.substr(program.find_last_of('/') + 1);
+  const char* names[] = {"angles_json_fuzz", "string_spec_fuzz", "string_target_fuzz",
+                         "cli_flags_fuzz", "sorce_spec_fuzz", "network_json_fuzz"};
+  for (int i = 0; i < 6; ++i)
+    if (name == names[i]) return i + 1;
+  std::fprintf(stderr, "cli_fuzz: %s is not one of the targets of fuzz/CMakeLists.txt\n", name.c_str());
+  std::abort();
+}
 
 struct NullBuffer : std::streambuf {
   int overflow(int c) override { return c; }
@@ -54,7 +64,7 @@ const std::string& private_directory() {
     static NullBuffer null;
     std::cout.rdbuf(&null);
     std::cerr.rdbuf(&null);
-    if (RIGIDFOLD_FUZZ_ENTRY == 4 && ::chdir(name) != 0) std::abort();
+    if (g_entry == 4 && ::chdir(name) != 0) std::abort();
     return std::string(name);
   }();
   return dir;
@@ -164,10 +174,15 @@ void run(const std::vector<std::string>& args) {
 
 }  // namespace
 
+extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
+  g_entry = entry_of(*argc > 0 ? (*argv)[0] : "");
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string input = in_private("input.json"), out = in_private("out.fold");
   std::vector<std::string> args;
-  switch (RIGIDFOLD_FUZZ_ENTRY) {
+  switch (g_entry) {
     case 1:
       write_input(data, size);
       args = {"rigidfold", "fold", kPattern, "--angles", input, "--out", out, "--obj", in_private("out.obj")};
@@ -195,6 +210,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   run(args);
   // The same file as the target of `fold --target` (the same reader, then the nearest closed state).
-  if (RIGIDFOLD_FUZZ_ENTRY == 1) run({"rigidfold", "fold", kPattern, "--target", input, "--out", out});
+  if (g_entry == 1) run({"rigidfold", "fold", kPattern, "--target", input, "--out", out});
   return 0;
 }
