@@ -177,25 +177,13 @@ class Search {
   std::vector<std::vector<int>> listed_;
 };
 
-// Fills out.creases, the symmetry counts and, for a vertex that blocks every assignment,
-// out.blocking_vertex (then the plan is not used).
-SearchPlan plan_search(const CreasePattern& pattern, const Topology& topology, const AssignmentEnumerationOptions& options,
-                       const std::string& source, AssignmentEnumeration& out) {
-  for (int v = 0; v < pattern.num_vertices(); ++v)
-    if (pattern.vertices[v].z() != 0.0)
-      throw InputError(source + ": vertices_coords[" + std::to_string(v) + "]",
-                       "z = " + round_trip_text(pattern.vertices[v].z()) + ": assignments are enumerated on a flat crease pattern");
-  std::vector<int> position(pattern.num_edges(), -1);
-  for (int e = 0; e < pattern.num_edges(); ++e)
-    if (is_foldable_crease(pattern.assignments[e])) {
-      position[e] = static_cast<int>(out.creases.size());
-      out.creases.push_back(e);
-    }
-
-  // Per interior vertex: its creases in CCW order and the sectors between them (sectors
-  // across F/J edges merged), then the letter sets that fold it flat.
+// Per interior vertex: its creases in CCW order and the sectors between them (sectors across
+// F/J edges merged), then the letter sets that fold it flat; on_vertex marks the creases met.
+// A vertex off Kawasaki or of odd degree is recorded in out.blocking_vertex instead.
+std::vector<VertexRule> vertex_rules(const Topology& topology, const std::vector<int>& position,
+                                     const AssignmentEnumerationOptions& options, const std::string& source,
+                                     AssignmentEnumeration& out, std::vector<bool>& on_vertex) {
   std::vector<VertexRule> rules;
-  std::vector<bool> on_vertex(out.creases.size(), false);
   for (int v : topology.interior_vertices) {
     const Fan& fan = topology.stars[v].fans[0];
     const int m = static_cast<int>(fan.edges.size());
@@ -238,6 +226,26 @@ SearchPlan plan_search(const CreasePattern& pattern, const Topology& topology, c
     for (int p : r.positions) on_vertex[p] = true;
     rules.push_back(std::move(r));
   }
+  return rules;
+}
+
+// Fills out.creases, the symmetry counts and, for a vertex that blocks every assignment,
+// out.blocking_vertex (then the plan is not used).
+SearchPlan plan_search(const CreasePattern& pattern, const Topology& topology, const AssignmentEnumerationOptions& options,
+                       const std::string& source, AssignmentEnumeration& out) {
+  for (int v = 0; v < pattern.num_vertices(); ++v)
+    if (pattern.vertices[v].z() != 0.0)
+      throw InputError(source + ": vertices_coords[" + std::to_string(v) + "]",
+                       "z = " + round_trip_text(pattern.vertices[v].z()) + ": assignments are enumerated on a flat crease pattern");
+  std::vector<int> position(pattern.num_edges(), -1);
+  for (int e = 0; e < pattern.num_edges(); ++e)
+    if (is_foldable_crease(pattern.assignments[e])) {
+      position[e] = static_cast<int>(out.creases.size());
+      out.creases.push_back(e);
+    }
+
+  std::vector<bool> on_vertex(out.creases.size(), false);
+  const std::vector<VertexRule> rules = vertex_rules(topology, position, options, source, out, on_vertex);
   SearchPlan plan;
   if (out.blocking_vertex >= 0) return plan;
   // Breadth-first order over shared creases, so that each vertex meets letters already set.

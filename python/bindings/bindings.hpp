@@ -20,7 +20,8 @@ void bind_design(py::module_& m);    // waterbomb bistability
 void bind_energy(py::module_& m);    // stable states of any pattern with crease springs
 void bind_thick(py::module_& m);     // thick-panel vertices (seed 003 ch. 4)
 void bind_sorce(py::module_& m);     // SORCE rolling joints (seed 002)
-void bind_metamaterial(py::module_& m);  // square-twist metamaterial unit (seed 003 3.3.2)
+void bind_metamaterial(py::module_& m);  // metamaterial units and stacks (seed 003 3.2.3, 3.3.2)
+void bind_network(py::module_& m);   // networks of spherical linkages (seed 003 ch. 2)
 void bind_formats(py::module_& m);   // SVG and DXF text of a crease pattern
 void bind_repair(py::module_& m);    // repair, add_creases, nearest_closed_state (design for any pattern)
 

@@ -78,6 +78,7 @@ PYBIND11_MODULE(_core, m) {
   bind_thick(m);
   bind_sorce(m);
   bind_metamaterial(m);
+  bind_network(m);
   bind_formats(m);
   bind_repair(m);
 }

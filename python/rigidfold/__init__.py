@@ -21,6 +21,8 @@ Thick:      ThickVertex, thick_bennett_vertex, thick_myard_vertex, thick_diamond
 Design:     waterbomb_bistability, string_pattern, string_forward, design_string_from_curve,
             sorce_vertex, sorce_circular_vertex (seed 002 rolling joints),
             square_twist_unit, square_twist_height_stationary_points (seed 003 metamaterial)
+Commands:   network, metamaterial (the dicts `rigidfold network --json` and
+            `rigidfold metamaterial --json` print, without "provenance")
 Version:    __version__ (the CLI's provenance "rigidfold_version"), __commit__
 Errors:     InputError (a ValueError; the message names the file and the place in it, e.place
             the place alone), NoAnswerError (a RuntimeError; e.residual)
@@ -44,10 +46,12 @@ from rigidfold._core import (
     flat_fold_multipliers,
     InputError,
     load,
+    metamaterial,
     miura_fold_angles,
     miura_ori,
     miura_vertex,
     nearest_closed_state,
+    network,
     NoAnswerError,
     parse_fold,
     repair,
@@ -110,9 +114,11 @@ __all__ = [
     "flat_fold_angles",
     "flat_fold_multipliers",
     "load",
+    "metamaterial",
     "miura_fold_angles",
     "miura_ori",
     "miura_vertex",
+    "network",
     "parse_fold",
     "save",
     "square_twist",
