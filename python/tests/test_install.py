@@ -72,21 +72,23 @@ def check_installed(python, tmp_path):
         assert out.strip()
 
 
-def test_pip_install_into_a_fresh_venv(tmp_path):
+def test_pip_install_and_the_wheel_into_a_fresh_venv(tmp_path):
+    """`pip install --no-build-isolation .`, then the wheel `python3 -m build --no-isolation` makes,
+    installed over it in the same venv (one venv: its creation is most of the time)."""
     src = source_copy(tmp_path)
     python = fresh_venv(str(tmp_path / "venv"))
     run([python, "-m", "pip", "install", "--no-build-isolation", str(src)], cwd=tmp_path, env=clean_env())
     check_installed(python, tmp_path)
+    run([python, "-m", "pip", "uninstall", "-y", "rigidfold"], cwd=tmp_path, env=clean_env())
+    gone = subprocess.run([python, "-c", "import rigidfold"], cwd=tmp_path / "elsewhere", env=clean_env(),
+                          capture_output=True, text=True)
+    assert gone.returncode != 0, "rigidfold still importable after pip uninstall"
 
-
-def test_wheel_built_offline_installs_into_a_fresh_venv(tmp_path):
     pytest.importorskip("build", reason="python3-build (scripts/bootstrap.sh) builds the wheel")
-    src = source_copy(tmp_path)
     run([sys.executable, "-m", "build", "--wheel", "--no-isolation", "--outdir", str(tmp_path / "dist"), str(src)],
         cwd=tmp_path, env=clean_env())
     wheels = glob.glob(str(tmp_path / "dist" / "rigidfold-*.whl"))
     assert len(wheels) == 1, wheels
     assert re.search(r"rigidfold-" + re.escape(rigidfold.__version__) + r"-cp\d+-cp\d+-linux_x86_64\.whl$", wheels[0]), wheels
-    python = fresh_venv(str(tmp_path / "venv"))
     run([python, "-m", "pip", "install", wheels[0]], cwd=tmp_path, env=clean_env())
     check_installed(python, tmp_path)
