@@ -140,11 +140,12 @@ def plain(value):
 
 def run_task(task):
     """One task, on a worker: {"result": ...}, or {"error": {"type", "message"}} when its input
-    is refused (InputError, ValueError, NoAnswerError)."""
+    is refused (InputError, ValueError, NoAnswerError; TypeError: a generator's parameters that
+    it does not take), so that one bad task does not stop the sweep."""
     import rigidfold
     try:
         return {"result": plain(compute(rigidfold, task))}
-    except (ValueError, RuntimeError) as e:  # InputError is a ValueError; NoAnswerError a RuntimeError
+    except (ValueError, RuntimeError, TypeError) as e:  # InputError is a ValueError; NoAnswerError a RuntimeError
         return {"error": {"type": type(e).__name__, "message": str(e)}}
 
 

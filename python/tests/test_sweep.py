@@ -169,8 +169,11 @@ def test_command_line_grids_and_folders_and_bad_specs(tmp_path):
     r = run_cli(str(tmp_path / "missing.json"), "--out", str(out), cwd=tmp_path)
     assert r.returncode == 2 and "missing.json" in r.stderr
     # A task whose input is refused is a record with its error, not a failed sweep.
-    spec.write_text(json.dumps({"tasks": [{"kind": "waterbomb", "n": 2, "theta0": 0.5}]}))
+    spec.write_text(json.dumps({"tasks": [
+        {"kind": "waterbomb", "n": 2, "theta0": 0.5},
+        {"kind": "check", "pattern": {"generator": "miura_ori", "rows": 2, "colz": 3}}]}))
     r = run_cli(str(spec), "--out", str(tmp_path / "e.jsonl"), "--workers", "1", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
-    (record,) = [json.loads(line) for line in (tmp_path / "e.jsonl").read_text().splitlines()]
-    assert record["error"]["type"] == "InputError" and "n" in record["error"]["message"]
+    records = {json.loads(line)["task"]["kind"]: json.loads(line) for line in (tmp_path / "e.jsonl").read_text().splitlines()}
+    assert records["waterbomb"]["error"]["type"] == "InputError" and "n" in records["waterbomb"]["error"]["message"]
+    assert records["check"]["error"]["type"] == "TypeError" and "colz" in records["check"]["error"]["message"]
