@@ -14,12 +14,8 @@
 
 #include "app/commands.hpp"
 #include "app/provenance.hpp"
-#include "app/summary_stream.hpp"
 #include "kernel/math/angle_units.hpp"
-#include "kernel/network/network_analysis.hpp"
-#include "kernel/pattern/fold_io.hpp"
-#include "kernel/pattern/input_error.hpp"
-#include "kernel/pattern/output_set.hpp"
+#include "kernel/network/network_run.hpp"
 #include "report/network_json.hpp"
 
 namespace rigidfold::cli {
@@ -82,31 +78,15 @@ void add_network_command(CLI::App& app) {
                   "write the assembly of four 4R linkages as a FOLD crease pattern (needs flat vertices (2-33), a flat "
                   "central panel (2-32) and a mobile network; letters from the configuration at input.start_deg)");
   cmd->callback([a] {
-    NetworkAnalysisOptions o;
-    o.trace_steps = a->trace;
-    o.crease_pattern = !a->out.empty();
-    o.source = a->path;
-    if (std::string why; !o.IsValid(&why)) throw InputError("--trace", "must be in 0..10000");
-    const NetworkSpec spec = read_network_json(a->path);
-    OutputSet outputs;
-    outputs.add_input("NETWORK", a->path);
-    if (!a->out.empty()) outputs.add_output("--out", a->out);
-    const SummaryToStderrIfStdoutIsAnOutput summary(outputs);
-    NetworkAnalysis r;
-    try {
-      r = analyse_network(spec, o);
-    } catch (const InputError& e) {
-      if (e.place() == "crease_pattern") throw InputError("--out", e.message());
-      throw;
-    }
-    if (r.crease_pattern) outputs.stage(a->out, write_fold_string(r.crease_pattern->pattern));
-    outputs.commit();
+    const NetworkRun run = run_network(a->path, a->trace, a->out);
+    // With --out - the FOLD text went to standard output: the summary goes to stderr.
     if (a->json) {
-      std::cout << document_text(report::network_json(a->path, spec, r, o, a->out)) << "\n";
+      (run.wrote_stdout ? std::cerr : std::cout) << document_text(report::network_json(a->path, run.spec, run.analysis,
+                                                                                       run.options, a->out))
+                                                 << "\n";
       return;
     }
-    // With --out - the FOLD text went to standard output: the summary goes to stderr.
-    print_network_text(outputs.writes_stdout() ? stderr : stdout, a->path, spec, r, o, a->out);
+    print_network_text(run.wrote_stdout ? stderr : stdout, a->path, run.spec, run.analysis, run.options, a->out);
   });
 }
 

@@ -3,10 +3,7 @@
 // The GIL is released while the file is read and the network analysed.
 #include <string>
 
-#include "kernel/network/network_analysis.hpp"
-#include "kernel/pattern/fold_io.hpp"
-#include "kernel/pattern/input_error.hpp"
-#include "kernel/pattern/output_set.hpp"
+#include "kernel/network/network_run.hpp"
 #include "python/bindings/bindings.hpp"
 #include "report/network_json.hpp"
 
@@ -16,31 +13,6 @@ namespace {
 // A path given as str, bytes or os.PathLike, as the CLI would receive it.
 std::string network_path_text(const py::object& path) {
   return py::module_::import("os").attr("fspath")(path).cast<std::string>();
-}
-
-// The steps of the CLI's callback with the Python names for the places in errors: spec_path
-// the network file, trace_steps (--trace), crease_pattern_path (--out; "" for none).
-nlohmann::ordered_json analysed_network_json(const std::string& spec_path, int trace_steps, const std::string& crease_pattern_path) {
-  NetworkAnalysisOptions options;
-  options.trace_steps = trace_steps;
-  options.crease_pattern = !crease_pattern_path.empty();
-  options.source = spec_path;
-  if (std::string why; !options.IsValid(&why)) throw InputError("trace_steps", "must be in 0..10000");
-  const NetworkSpec spec = read_network_json(spec_path);
-  // Declared before any work, as the CLI does: the crease pattern may not replace the network file.
-  OutputSet outputs;
-  outputs.add_input("spec", spec_path);
-  if (options.crease_pattern) outputs.add_output("out", crease_pattern_path);
-  NetworkAnalysis analysis;
-  try {
-    analysis = analyse_network(spec, options);
-  } catch (const InputError& e) {
-    if (e.place() == "crease_pattern") throw InputError("out", e.message());
-    throw;
-  }
-  if (analysis.crease_pattern) outputs.stage(crease_pattern_path, write_fold_string(analysis.crease_pattern->pattern));
-  outputs.commit();
-  return report::network_json(spec_path, spec, analysis, options, crease_pattern_path);
 }
 
 }  // namespace
@@ -54,7 +26,9 @@ void bind_network(py::module_& m) {
         nlohmann::ordered_json j;
         {
           py::gil_scoped_release release;
-          j = analysed_network_json(spec_path, trace_steps, crease_pattern_path);
+          const NetworkRun run =
+              run_network(spec_path, trace_steps, crease_pattern_path, {"spec", "trace_steps", "out"});
+          j = report::network_json(spec_path, run.spec, run.analysis, run.options, crease_pattern_path);
         }
         return json_to_python(j);
       },
