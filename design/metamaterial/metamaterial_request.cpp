@@ -12,6 +12,12 @@
 namespace rigidfold::metamaterial {
 namespace {
 
+// The defaults of the fields not given (docs/cli/metamaterial.md).
+constexpr double kSquareTwistAlphaDeg = 150.0;  // the seed's 5 pi / 6
+constexpr double kElementAlphaDeg = 60.0;       // elements and stacks
+constexpr double kBetaDeg = 70.0;
+constexpr int kCrossCheckSteps = 40;
+
 // The caller's name of a request field, for the place and the text of an InputError.
 class FieldNamer {
  public:
@@ -57,8 +63,8 @@ generators::StackedMetamaterialParams checked_stack_params(const MetamaterialReq
     throw InputError(name("layers"), "must be between 2 and 16, got " + std::to_string(options->layers));
   if (options->steps < 8 || options->steps > 200)
     throw InputError(name("stacked_steps"), "must be between 8 and 200, got " + std::to_string(options->steps));
-  const double alpha_deg = r.alpha_deg.value_or(60.0);
-  const double beta_deg = r.beta_deg.value_or(70.0);
+  const double alpha_deg = r.alpha_deg.value_or(kElementAlphaDeg);
+  const double beta_deg = r.beta_deg.value_or(kBetaDeg);
   const double l = r.l.value_or(1.0);
   for (const auto& [field, v] : {std::pair<const char*, double>{"alpha_deg", alpha_deg}, {"beta_deg", beta_deg}})
     if (!(std::isfinite(v) && v > 0 && v < 180)) throw InputError(name(field), "must lie strictly between 0 and 180 degrees");
@@ -77,8 +83,8 @@ StackedMetamaterialRun run_stacked(const MetamaterialRequest& r, const FieldName
   StackedMetamaterialOptions options;
   const generators::StackedMetamaterialParams params = checked_stack_params(r, name, &options);
   StackedMetamaterialRun run;
-  run.alpha_deg = r.alpha_deg.value_or(60.0);
-  run.beta_deg = r.beta_deg.value_or(70.0);
+  run.alpha_deg = r.alpha_deg.value_or(kElementAlphaDeg);
+  run.beta_deg = r.beta_deg.value_or(kBetaDeg);
   // Checked inside: NoAnswerError before anything is returned.
   run.check = stacked_metamaterial_check(params, options);
   return run;
@@ -109,7 +115,7 @@ void check_cross_check_fields(const MetamaterialRequest& r, const FieldNamer& na
     if (!(v > least * (1 + 1e-9)))
       throw InputError(name(field), name("cross_check") + " traces a tessellation whose pleat creases between twists "
                                                           "need it > -a cos(alpha) = " + std::to_string(least));
-  const int steps = r.cross_check_steps.value_or(40);
+  const int steps = r.cross_check_steps.value_or(kCrossCheckSteps);
   if (steps < 10 || steps > 2000)
     throw InputError(name("cross_check_steps"), "must be between 10 and 2000, got " + std::to_string(steps));
 }
@@ -117,7 +123,7 @@ void check_cross_check_fields(const MetamaterialRequest& r, const FieldNamer& na
 SquareTwistUnitParams checked_square_twist(const MetamaterialRequest& r, const FieldNamer& name) {
   for (const auto& [field, given] : {std::pair<const char*, bool>{"beta_deg", r.beta_deg.has_value()}, {"l", r.l.has_value()}})
     if (given) throw InputError(name(field), "applies to the elements, not to " + name.with_value("unit", "square-twist"));
-  const double alpha_deg = r.alpha_deg.value_or(150.0);
+  const double alpha_deg = r.alpha_deg.value_or(kSquareTwistAlphaDeg);
   require_finite(name, "alpha_deg", alpha_deg);
   if (!(alpha_deg > 90 && alpha_deg < 180))
     throw InputError(name("alpha_deg"), std::to_string(alpha_deg) + " is outside (90, 180) degrees");
@@ -147,8 +153,8 @@ CorrugatedElementParams checked_element(const MetamaterialRequest& r, const Fiel
   if (r.cross_check_steps) throw InputError(name("cross_check_steps"), "applies to " + square_twist + " with " + name("cross_check"));
   for (const auto& [field, given] : {std::pair<const char*, bool>{"a", r.a.has_value()}, {"b", r.b.has_value()}, {"c", r.c.has_value()}})
     if (given) throw InputError(name(field), "applies to " + square_twist + ", not to the elements");
-  const double alpha_deg = r.alpha_deg.value_or(60.0);
-  const double beta_deg = r.beta_deg.value_or(70.0);
+  const double alpha_deg = r.alpha_deg.value_or(kElementAlphaDeg);
+  const double beta_deg = r.beta_deg.value_or(kBetaDeg);
   const double l = r.l.value_or(1.0);
   require_finite(name, "alpha_deg", alpha_deg);
   require_finite(name, "beta_deg", beta_deg);
@@ -196,7 +202,7 @@ MetamaterialUnitRun run_unit(const MetamaterialRequest& r, const FieldNamer& nam
   // Checked inside (every difference <= kCrossCheckTolerance, else NoAnswerError).
   if (r.cross_check.value_or(false)) {
     SquareTwistCrossCheckOptions options;
-    options.steps = r.cross_check_steps.value_or(40);
+    options.steps = r.cross_check_steps.value_or(kCrossCheckSteps);
     run.cross_check = square_twist_cross_check(run.params.square_twist, options);
   }
   if (!run.plot_files.empty()) {
