@@ -192,8 +192,8 @@ def assignment_tasks(pattern, depth=None, tasks_wanted=64, **options):
         depth, branches = 0, [[]]
         while len(branches) < tasks_wanted:
             deeper = rigidfold.assignment_branches(loaded, depth + 1, symmetry)
-            if len(deeper) <= len(branches):
-                break  # the search has no more vertices
+            if not deeper or len(deeper[0]) <= depth:
+                break  # the search has no more vertices (a deeper level may keep the count: one letter set fits)
             depth, branches = depth + 1, deeper
     else:
         branches = rigidfold.assignment_branches(loaded, depth, symmetry)
